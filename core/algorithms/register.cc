@@ -1,0 +1,7 @@
+#include "core/algorithms/register.h"
+
+namespace swarmplan {
+
+void RegisterAllPlanners(Registry& registry) { RegisterExactPlanners(registry); }
+
+}  // namespace swarmplan

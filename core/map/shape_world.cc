@@ -1,0 +1,74 @@
+#include "core/map/shape_world.h"
+
+#include <cmath>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+
+namespace swarmplan {
+namespace {
+
+double SignedArea(const std::vector<Point2>& v) {
+  double area = 0.0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Point2& a = v[i];
+    const Point2& b = v[(i + 1) % v.size()];
+    area += a.x() * b.y() - b.x() * a.y();
+  }
+  return area / 2.0;
+}
+
+}  // namespace
+
+absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle> circles,
+                                              std::vector<Polygon> polygons,
+                                              const MapLimits& limits) {
+  if (!bounds.min.allFinite() || !bounds.max.allFinite() || bounds.Width() <= 0 ||
+      bounds.Height() <= 0) {
+    return absl::InvalidArgumentError(
+        "bounds: must be finite with max > min in both x and y");
+  }
+  if (static_cast<int64_t>(circles.size() + polygons.size()) > limits.max_obstacles) {
+    return absl::ResourceExhaustedError(absl::StrCat(circles.size() + polygons.size(),
+                                                     " obstacles exceed the limit of ",
+                                                     limits.max_obstacles));
+  }
+  for (size_t i = 0; i < circles.size(); ++i) {
+    const Circle& c = circles[i];
+    if (!c.center.allFinite() || !std::isfinite(c.radius) || c.radius <= 0) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("circles[", i, "]: center must be finite and radius positive"));
+    }
+  }
+  int64_t vertices = 0;
+  for (size_t i = 0; i < polygons.size(); ++i) {
+    std::vector<Point2>& v = polygons[i].vertices;
+    if (v.size() >= 2 && (v.front() - v.back()).norm() == 0.0) v.pop_back();  // closed ring
+    vertices += static_cast<int64_t>(v.size());
+    if (vertices > limits.max_vertices) {
+      return absl::ResourceExhaustedError(
+          absl::StrCat("polygons hold more than the limit of ", limits.max_vertices, " vertices"));
+    }
+    for (const Point2& p : v) {
+      if (!p.allFinite()) {
+        return absl::InvalidArgumentError(absl::StrCat("polygons[", i, "]: vertex not finite"));
+      }
+    }
+    if (v.size() < 3) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("polygons[", i, "]: needs at least 3 distinct vertices, got ", v.size()));
+    }
+    const double area = SignedArea(v);
+    if (area == 0.0 || !std::isfinite(area)) {
+      return absl::InvalidArgumentError(absl::StrCat("polygons[", i, "]: has zero area"));
+    }
+    if (area < 0) std::reverse(v.begin(), v.end());
+  }
+  ShapeWorld world;
+  world.bounds_ = bounds;
+  world.circles_ = std::move(circles);
+  world.polygons_ = std::move(polygons);
+  return world;
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "absl/time/time.h"
+#include "core/map/map.h"
+
+namespace swarmplan {
+
+struct Limits {
+  int max_iterations = 0;                              // 0: the planner's own default
+  absl::Duration time_budget = absl::InfiniteDuration();
+};
+
+// What to plan: immutable, owned by the caller, shared read-only with the planner.
+// Coordinates are world coordinates on 2D maps (z ignored) and grid coordinates on terrain
+// (see Terrain). `clearance` is the distance every point of the path keeps from obstacles.
+struct Problem {
+  MapPtr map;
+  Point3 start = Point3::Zero();
+  Point3 goal = Point3::Zero();
+  double clearance = 0.0;
+  Limits limits;
+  uint64_t seed = 1;  // never 0 here: RunPlan resolves "pick one" before calling a planner
+};
+
+}  // namespace swarmplan

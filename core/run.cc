@@ -1,0 +1,131 @@
+#include "core/run.h"
+
+#include <time.h>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
+#include "core/geometry/collision.h"
+#include "core/random.h"
+#include "core/smoothing/smoothing.h"
+
+namespace swarmplan {
+namespace {
+
+absl::Duration ThreadCpuTime() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return absl::Seconds(ts.tv_sec) + absl::Nanoseconds(ts.tv_nsec);
+}
+
+std::string FormatPoint(const Map& map, const Point3& p) {
+  if (map.is_3d()) return absl::StrFormat("(%g, %g, %g)", p.x(), p.y(), p.z());
+  return absl::StrFormat("(%g, %g)", p.x(), p.y());
+}
+
+absl::Status CheckEndpoint(const Map& map, const CollisionChecker& checker, const Point3& p,
+                           double clearance, const char* field) {
+  if (!p.allFinite()) {
+    return absl::InvalidArgumentError(absl::StrCat(field, ": coordinates must be finite"));
+  }
+  const double c = checker.Clearance(p);
+  if (c == -std::numeric_limits<double>::infinity()) {
+    return absl::FailedPreconditionError(
+        absl::StrCat(field, " ", FormatPoint(map, p), " is outside the map"));
+  }
+  if (c < clearance) {
+    return absl::FailedPreconditionError(absl::StrFormat(
+        "%s %s is inside an obstacle or closer than the clearance %g to one (clearance there: "
+        "%g)",
+        field, FormatPoint(map, p), clearance, std::max(c, 0.0)));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& request) {
+  absl::StatusOr<const PlannerInfo*> info = registry.Get(request.algorithm);
+  if (!info.ok()) return info.status();
+  if (absl::StatusOr<ParamSet> params = ParamSet::Resolve((*info)->params, request.params);
+      !params.ok()) {
+    return params.status();
+  }
+  const Problem& problem = request.problem;
+  if (problem.map == nullptr) return absl::InvalidArgumentError("map: no map given");
+  const Map& map = *problem.map;
+  if (!(*info)->Supports(map.kind())) {
+    return absl::FailedPreconditionError(absl::StrCat(
+        "algorithm '", request.algorithm, "' cannot plan on a ", MapKindName(map.kind()),
+        " map; it accepts: ", JoinMapKinds((*info)->map_kinds)));
+  }
+  if (!std::isfinite(problem.clearance) || problem.clearance < 0) {
+    return absl::InvalidArgumentError("clearance: must be a finite number >= 0");
+  }
+  if (problem.limits.max_iterations < 0) {
+    return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
+  }
+  bool known_smoothing = false;
+  for (const std::string& m : SmoothingMethods()) known_smoothing |= m == request.smoothing;
+  if (!known_smoothing && !request.smoothing.empty()) {
+    return absl::InvalidArgumentError(absl::StrCat("smoothing: unknown method '",
+                                                   request.smoothing, "'"));
+  }
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(map);
+  if (absl::Status s = CheckEndpoint(map, *checker, problem.start, problem.clearance, "start");
+      !s.ok()) {
+    return s;
+  }
+  return CheckEndpoint(map, *checker, problem.goal, problem.clearance, "goal");
+}
+
+absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,
+                                   const StopToken& stop, Observer& observer) {
+  if (absl::Status s = ValidatePlanRequest(registry, request); !s.ok()) return s;
+  const PlannerInfo& info = **registry.Get(request.algorithm);
+  absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, request.params);
+  if (!params.ok()) return params.status();
+  std::unique_ptr<Planner> planner = info.factory(*params);
+
+  Problem problem = request.problem;
+  if (problem.seed == 0) problem.seed = PickSeed();
+  StopToken bounded = stop.WithMaxIterations(problem.limits.max_iterations);
+  const absl::Time start_time = absl::Now();
+  if (problem.limits.time_budget != absl::InfiniteDuration()) {
+    bounded = bounded.WithDeadline(start_time + problem.limits.time_budget);
+  }
+
+  const absl::Duration cpu_start = ThreadCpuTime();
+  absl::StatusOr<SearchResult> search = planner->Solve(problem, bounded, observer);
+  if (!search.ok()) return search.status();
+
+  PlanResult result;
+  result.algorithm = info.id;
+  result.found = search->found;
+  result.raw_path = std::move(search->path);
+  result.fitness = search->fitness;
+  result.iterations = search->iterations;
+  result.evaluations = search->evaluations;
+  result.best_iteration = search->best_iteration;
+  result.stop_reason = search->stop_reason;
+  result.convergence = std::move(search->convergence);
+  result.seed = problem.seed;
+  result.resolved_params = params->values();
+  result.smoothing = request.smoothing.empty() ? "none" : request.smoothing;
+
+  const Map& map = *problem.map;
+  if (!result.raw_path.empty()) {
+    absl::StatusOr<SmoothingResult> smoothed =
+        Smooth(result.smoothing, map, result.raw_path, problem.clearance);
+    if (!smoothed.ok()) return smoothed.status();
+    result.smoothed_path = std::move(smoothed->path);
+    result.smoothing_collision_free = smoothed->collision_free;
+  }
+  result.raw_metrics = EvaluatePath(map, result.raw_path, problem.clearance);
+  result.smoothed_metrics = EvaluatePath(map, result.smoothed_path, problem.clearance);
+  result.wall_time = absl::Now() - start_time;
+  result.cpu_time = ThreadCpuTime() - cpu_start;
+  return result;
+}
+
+}  // namespace swarmplan

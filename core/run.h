@@ -1,0 +1,54 @@
+#pragma once
+
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "absl/time/time.h"
+#include "core/path_metrics.h"
+#include "core/planner.h"
+#include "core/registry.h"
+
+namespace swarmplan {
+
+// A plan as a client asks for it: the algorithm by id, its raw parameters, the problem (a seed
+// of 0 means "pick one and report it") and the smoothing to apply to the raw path.
+struct PlanRequest {
+  std::string algorithm;
+  ParamValues params;
+  Problem problem;
+  std::string smoothing = "none";  // "none", or a method of SmoothingMethods()
+};
+
+// Everything a plan returns, the same whatever the planner.
+struct PlanResult {
+  std::string algorithm;
+  bool found = false;
+  Path raw_path;
+  Path smoothed_path;  // equals raw_path when smoothing is "none"
+  PathMetrics raw_metrics;
+  PathMetrics smoothed_metrics;
+  std::string smoothing;
+  bool smoothing_collision_free = true;
+  double fitness = 0.0;
+  int iterations = 0;
+  int64_t evaluations = 0;
+  int best_iteration = 0;
+  StopReason stop_reason = StopReason::kNone;
+  absl::Duration wall_time;
+  absl::Duration cpu_time;
+  uint64_t seed = 0;
+  ParamValues resolved_params;
+  std::vector<IterationStats> convergence;
+};
+
+// Checks the request (known algorithm, parameters, map kind, start and goal inside the map and
+// clear of obstacles), then runs the planner under `stop` (tightened by the problem's limits),
+// smooths and evaluates the path. Errors: INVALID_ARGUMENT (parameters, smoothing),
+// NOT_FOUND (algorithm), FAILED_PRECONDITION (map kind, start or goal blocked or outside).
+absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,
+                                   const StopToken& stop, Observer& observer);
+
+// The checks RunPlan makes before it plans, for callers that want to reject a request early.
+absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& request);
+
+}  // namespace swarmplan
