@@ -1,0 +1,153 @@
+#include "core/geometry/grid_collision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace swarmplan {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kHalfDiagonal = 0.70710678118654757;  // sqrt(2) / 2, rounded up
+// Cell-boundary tolerance of the exact traversal (in cells): a segment this close to a blocked
+// square counts as touching it, so rounding can only make the check stricter.
+constexpr double kTouchEps = 1e-9;
+// Beyond this upper bound (cells) Clearance uses the distance-field bound instead of a scan.
+constexpr double kExactReach = 4.0;
+// Smallest step of the sphere tracing (cells); the slack of SegmentFree is half of it.
+constexpr double kMinTraceStep = 1.0 / 16.0;
+// Sample spacing of SegmentClearance (cells); its slack is half of it.
+constexpr double kClearanceStep = 0.25;
+
+// Lower bound of the clearance along the stretch between two samples `step` apart whose
+// clearances are fa and fb (clearance is 1-Lipschitz).
+double StretchBound(double fa, double fb, double step) {
+  return std::min({fa, fb, 0.5 * (fa + fb - step)});
+}
+
+}  // namespace
+
+GridCollisionChecker::GridCollisionChecker(const OccupancyGrid& grid)
+    : grid_(grid), inv_resolution_(1.0 / grid.resolution()) {}
+
+bool GridCollisionChecker::InMap(const Point2& u) const {
+  return u.x() >= 0 && u.y() >= 0 && u.x() <= grid_.width() && u.y() <= grid_.height();
+}
+
+double GridCollisionChecker::LocalClearance(const Point2& u) const {
+  if (!InMap(u)) return -kInf;
+  const int cx = std::min(static_cast<int>(u.x()), grid_.width() - 1);
+  const int cy = std::min(static_cast<int>(u.y()), grid_.height() - 1);
+  if (grid_.IsBlocked(cx, cy)) {
+    // Inside a blocked square: minus the depth in this square, and never 0, so that a point
+    // in a blocked cell is never free, even for clearance 0.
+    const double depth = std::min({u.x() - cx, cx + 1 - u.x(), u.y() - cy, cy + 1 - u.y()});
+    return -std::max(depth, 1e-9);
+  }
+  const double centre_distance = grid_.DistanceToObstacle(cx, cy) * inv_resolution_;
+  if (centre_distance == kInf) return kInf;
+  const double offset = (u - Point2(cx + 0.5, cy + 0.5)).norm();
+  // The blocked cell nearest the centre is at most this far from u.
+  const double upper = centre_distance + offset;
+  if (upper > kExactReach) {
+    // Every blocked centre is >= centre_distance - offset from u, and a square reaches at
+    // most half a diagonal beyond its centre.
+    return std::max(0.0, centre_distance - offset - kHalfDiagonal - 1e-12);
+  }
+  double best = upper;
+  const int x0 = std::max(0, static_cast<int>(std::ceil(u.x() - upper)) - 1);
+  const int x1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(u.x() + upper)));
+  const int y0 = std::max(0, static_cast<int>(std::ceil(u.y() - upper)) - 1);
+  const int y1 = std::min(grid_.height() - 1, static_cast<int>(std::floor(u.y() + upper)));
+  for (int y = y0; y <= y1; ++y) {
+    const double dy = std::max({0.0, y - u.y(), u.y() - (y + 1)});
+    if (dy >= best) continue;
+    for (int x = x0; x <= x1; ++x) {
+      if (!grid_.IsBlocked(x, y)) continue;
+      const double dx = std::max({0.0, x - u.x(), u.x() - (x + 1)});
+      best = std::min(best, std::hypot(dx, dy));
+    }
+  }
+  return best;
+}
+
+double GridCollisionChecker::Clearance(const Point3& p) const {
+  const Point2 u = (p.head<2>() - grid_.origin()) * inv_resolution_;
+  const double c = LocalClearance(u);
+  return std::isfinite(c) ? c * grid_.resolution() : c;
+}
+
+double GridCollisionChecker::TraceClearance(const Point2& a, const Point2& b, double floor) const {
+  const double length = (b - a).norm();
+  double fa = LocalClearance(a);
+  // +infinity only when no cell is blocked.
+  if (length == 0.0 || fa < floor || fa == kInf) return fa;
+  const Point2 dir = (b - a) / length;
+  const bool stop_early = floor > -kInf;
+  double result = fa;
+  double sample_min = fa;
+  double t = 0.0;
+  while (t < length) {
+    // With a floor, the stretch is safe while fa - floor lasts. Without one, a step of
+    // fa - sample_min + kClearanceStep keeps every stretch bound >= sample_min - step / 2.
+    const double step =
+        stop_early ? std::max(kMinTraceStep, fa - floor) : fa - sample_min + kClearanceStep;
+    const double t_next = std::min(length, t + step);
+    const double fb = LocalClearance(t_next == length ? b : Point2(a + t_next * dir));
+    result = std::min(result, StretchBound(fa, fb, t_next - t));
+    if (result < floor) return result;
+    sample_min = std::min(sample_min, fb);
+    t = t_next;
+    fa = fb;
+  }
+  return result;
+}
+
+double GridCollisionChecker::SegmentClearance(const Point3& a, const Point3& b) const {
+  const Point2 ua = (a.head<2>() - grid_.origin()) * inv_resolution_;
+  const Point2 ub = (b.head<2>() - grid_.origin()) * inv_resolution_;
+  if (!InMap(ua) || !InMap(ub)) return -kInf;
+  const double c = TraceClearance(ua, ub, -kInf);
+  return std::isfinite(c) ? c * grid_.resolution() : c;
+}
+
+bool GridCollisionChecker::SegmentFree(const Point3& a, const Point3& b, double clearance) const {
+  const Point2 ua = (a.head<2>() - grid_.origin()) * inv_resolution_;
+  const Point2 ub = (b.head<2>() - grid_.origin()) * inv_resolution_;
+  if (!InMap(ua) || !InMap(ub)) return false;
+  if (clearance <= 0) return TraversalFree(ua, ub);
+  const double floor = clearance * inv_resolution_;
+  return TraceClearance(ua, ub, floor) >= floor;
+}
+
+bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const {
+  if (!InMap(a) || !InMap(b)) return false;
+  const double y_min = std::min(a.y(), b.y());
+  const double y_max = std::max(a.y(), b.y());
+  const double dy = b.y() - a.y();
+  const double dx = b.x() - a.x();
+  const int row0 = std::max(0, static_cast<int>(std::ceil(y_min - kTouchEps)) - 1);
+  const int row1 = std::min(grid_.height() - 1, static_cast<int>(std::floor(y_max + kTouchEps)));
+  for (int row = row0; row <= row1; ++row) {
+    // The part of the segment inside the closed band row <= y <= row + 1.
+    double x_lo, x_hi;
+    if (dy == 0.0) {
+      x_lo = std::min(a.x(), b.x());
+      x_hi = std::max(a.x(), b.x());
+    } else {
+      const double s0 = std::clamp((row - a.y()) / dy, 0.0, 1.0);
+      const double s1 = std::clamp((row + 1 - a.y()) / dy, 0.0, 1.0);
+      x_lo = a.x() + std::min(s0, s1) * dx;
+      x_hi = a.x() + std::max(s0, s1) * dx;
+      if (x_lo > x_hi) std::swap(x_lo, x_hi);
+    }
+    const int col0 = std::max(0, static_cast<int>(std::ceil(x_lo - kTouchEps)) - 1);
+    const int col1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(x_hi + kTouchEps)));
+    for (int col = col0; col <= col1; ++col) {
+      if (grid_.IsBlocked(col, row)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "core/geometry/collision.h"
+#include "core/map/occupancy_grid.h"
+
+namespace swarmplan {
+
+// Collision checking on an occupancy grid. The map is the closed rectangle the cells cover;
+// obstacles are the closed squares of blocked cells. Allocation-free; the grid must outlive
+// the checker.
+class GridCollisionChecker final : public CollisionChecker {
+ public:
+  explicit GridCollisionChecker(const OccupancyGrid& grid);
+
+  // Distance to the nearest blocked square: exact when that square is within a few cells,
+  // otherwise a lower bound from the distance field that is at most resolution * sqrt(2)
+  // below the truth. Negative inside a blocked cell (minus the depth in that cell, at least
+  // 1e-9 cells), +infinity when nothing is blocked.
+  double Clearance(const Point3& p) const override;
+  // Sphere tracing with Clearance: a lower bound, at most resolution / 8 below the exact value
+  // near obstacles (plus Clearance's own slack far from them).
+  double SegmentClearance(const Point3& a, const Point3& b) const override;
+  // clearance <= 0: exact cell traversal (every cell whose closed square meets the segment
+  // must be free). clearance > 0: conservative sphere tracing.
+  bool SegmentFree(const Point3& a, const Point3& b, double clearance) const override;
+
+  // True when every cell whose closed square meets the segment is free (a and b in grid
+  // coordinates, i.e. (world - origin) / resolution). Exposed for tests and grid planners.
+  bool TraversalFree(const Point2& a, const Point2& b) const;
+
+ private:
+  bool InMap(const Point2& local) const;
+  // Clearance at a point given in grid coordinates, in cells.
+  double LocalClearance(const Point2& local) const;
+  // Smallest clearance along a..b (grid coordinates, in cells) while it stays >= floor;
+  // returns a value below floor as soon as one is found.
+  double TraceClearance(const Point2& a, const Point2& b, double floor) const;
+
+  const OccupancyGrid& grid_;
+  double inv_resolution_;
+};
+
+}  // namespace swarmplan

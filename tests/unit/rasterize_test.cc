@@ -1,0 +1,94 @@
+#include "core/geometry/rasterize.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/geometry/shape_collision.h"
+#include "core/random.h"
+#include "gtest/gtest.h"
+
+namespace swarmplan {
+namespace {
+
+int BlockedCells(const OccupancyGrid& grid) { return static_cast<int>(grid.BlockedCount()); }
+
+TEST(RasterizeTest, AlignedSquareAndCircleBlockExactlyTheirCells) {
+  const ShapeWorld world =
+      *ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(10, 8)}, {Circle{Point2(6.5, 6.5), 0.5}},
+                          {Polygon{{Point2(2, 2), Point2(4, 2), Point2(4, 4), Point2(2, 4)}}});
+  absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, 1.0);
+  ASSERT_TRUE(grid.ok()) << grid.status();
+  EXPECT_EQ(grid->width(), 10);
+  EXPECT_EQ(grid->height(), 8);
+  EXPECT_EQ(BlockedCells(*grid), 5);
+  for (const Cell c : {Cell{2, 2}, Cell{3, 2}, Cell{2, 3}, Cell{3, 3}, Cell{6, 6}}) {
+    EXPECT_TRUE(grid->IsBlocked(c)) << c.x << "," << c.y;
+  }
+  // At half resolution the circle's cell splits in four, all overlapping the disc.
+  absl::StatusOr<OccupancyGrid> fine = RasterizeShapeWorld(world, 0.5);
+  ASSERT_TRUE(fine.ok());
+  EXPECT_EQ(BlockedCells(*fine), 16 + 4);
+}
+
+TEST(RasterizeTest, OriginAndPartialCells) {
+  const ShapeWorld world =
+      *ShapeWorld::Create(Bounds2{Point2(-3, 10), Point2(7.5, 13)}, {},
+                          {Polygon{{Point2(-2.9, 10.1), Point2(-2.8, 10.1), Point2(-2.8, 10.2)}}});
+  absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, 1.0);
+  ASSERT_TRUE(grid.ok()) << grid.status();
+  EXPECT_EQ(grid->width(), 10);  // the half cell beyond x = 7 is left out
+  EXPECT_EQ(grid->height(), 3);
+  EXPECT_EQ(grid->origin(), Point2(-3, 10));
+  EXPECT_EQ(BlockedCells(*grid), 1);
+  EXPECT_TRUE(grid->IsBlocked(0, 0));
+  EXPECT_FALSE(RasterizeShapeWorld(world, 20.0).ok());
+  EXPECT_FALSE(RasterizeShapeWorld(world, 0.0).ok());
+  EXPECT_FALSE(RasterizeShapeWorld(world, -1.0).ok());
+}
+
+TEST(RasterizeTest, ConservativeOnRandomWorlds) {
+  Rng rng(17);
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<Circle> circles;
+    std::vector<Polygon> polygons;
+    for (int i = 0; i < 6; ++i) {
+      circles.push_back(
+          Circle{Point2(rng.Uniform(0, 20), rng.Uniform(0, 20)), rng.Uniform(0.2, 2.0)});
+      const Point2 c(rng.Uniform(0, 20), rng.Uniform(0, 20));
+      Polygon p;
+      const int n = 3 + static_cast<int>(rng.UniformInt(0, 4));
+      for (int k = 0; k < n; ++k) {
+        const double a = 2 * std::numbers::pi * k / n;
+        const double r = rng.Uniform(0.5, 2.5);
+        p.vertices.push_back(c + r * Point2(std::cos(a), std::sin(a)));
+      }
+      polygons.push_back(p);
+    }
+    const ShapeWorld world =
+        *ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(20, 20)}, circles, polygons);
+    const double resolution = 0.37;
+    absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, resolution);
+    ASSERT_TRUE(grid.ok()) << grid.status();
+    ShapeCollisionChecker checker(world);
+    for (int i = 0; i < 20000; ++i) {
+      const Point2 p(rng.Uniform(0, grid->width() * resolution),
+                     rng.Uniform(0, grid->height() * resolution));
+      const Cell cell = grid->CellAt(p);
+      if (checker.Clearance(Point3(p.x(), p.y(), 0)) < 0) {
+        ASSERT_TRUE(grid->IsBlocked(cell)) << p.transpose();
+      }
+    }
+    // Blocked cells overlap an obstacle: their squares come within a diagonal of one.
+    for (int y = 0; y < grid->height(); ++y) {
+      for (int x = 0; x < grid->width(); ++x) {
+        if (!grid->IsBlocked(x, y)) continue;
+        const Point2 centre = grid->CellCenter(Cell{x, y});
+        ASSERT_LT(checker.Clearance(Point3(centre.x(), centre.y(), 0)),
+                  resolution * std::sqrt(0.5));
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swarmplan
