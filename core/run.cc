@@ -33,7 +33,8 @@ absl::Status CheckEndpoint(const Map& map, const CollisionChecker& checker, cons
     return absl::FailedPreconditionError(
         absl::StrCat(field, " ", FormatPoint(map, p), " is outside the map"));
   }
-  if (c < clearance) {
+  // Touching an obstacle (clearance 0) counts as a collision, whatever the requested clearance.
+  if (c <= 0.0 || c < clearance) {
     return absl::FailedPreconditionError(absl::StrFormat(
         "%s %s is inside an obstacle or closer than the clearance %g to one (clearance there: "
         "%g)",
