@@ -1,0 +1,319 @@
+#include "core/algorithms/afsa/fish_swarm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/graph/grid_search.h"
+#include "core/grid_ops/cell_path.h"
+#include "core/grid_ops/grid_space.h"
+#include "core/random.h"
+
+namespace swarmplan {
+namespace {
+
+struct Fish {
+  Cell pos;
+  std::vector<Cell> trail;
+};
+
+double Dist(Cell a, Cell b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+class FishSwarmSearch {
+ public:
+  FishSwarmSearch(const FishSwarmParams& p, const Problem& problem, const GridSpace& space)
+      : p_(p),
+        problem_(problem),
+        space_(space),
+        moves_(*space.grid, MoveRules{p.neighbourhood, p.segment_check, problem.clearance}),
+        rng_(problem.seed) {
+    const OccupancyGrid& g = *space.grid;
+    // Any loop-free path is shorter than this: unreached fish rank behind every arrival.
+    unreached_offset_ = static_cast<double>(g.width()) * g.height() * g.resolution() * 3.0;
+    dist_min_ = std::max(Dist(space.start, space.goal), 1e-9);
+  }
+
+  SearchResult Run(const StopToken& stop, Observer& observer) {
+    SearchResult result;
+    fish_.assign(p_.population, Fish{space_.start, {space_.start}});
+    best_fitness_ = Unreached(space_.start);
+    ConvergenceLog log(observer);
+    int iteration = 0;
+    bool done = false;
+    for (; iteration < p_.max_generations && !done; ++iteration) {
+      if (StopReason why = stop.Check(iteration); why != StopReason::kNone) {
+        result.stop_reason = why;
+        break;
+      }
+      double sum = 0.0;
+      for (size_t i = 0; i < fish_.size(); ++i) {
+        const double f = Swim(i, iteration);
+        sum += f;
+        if (!p_.feasible_solutions && !best_cells_.empty()) done = true;
+      }
+      log.Record(iteration, best_fitness_, sum / fish_.size(), evaluations_, !best_cells_.empty());
+      if (done) {
+        ++iteration;
+        break;
+      }
+    }
+    result.iterations = iteration;
+    result.evaluations = evaluations_;
+    result.best_iteration = best_iteration_;
+    result.convergence = log.Take();
+    SetGridPath(problem_, *space_.grid, best_cells_, best_fitness_, result);
+    if (best_cells_.empty()) result.fitness = best_fitness_;
+    return result;
+  }
+
+ private:
+  double Food(Cell c) {
+    ++evaluations_;
+    return Dist(c, space_.goal);
+  }
+  double Unreached(Cell c) { return unreached_offset_ + Food(c) * space_.grid->resolution(); }
+
+  void Offer(double fitness, int iteration) {
+    if (fitness < best_fitness_ - 1e-12) {
+      best_fitness_ = fitness;
+      best_iteration_ = iteration;
+    }
+  }
+
+  // One fish's behaviour for this iteration; returns its fitness afterwards.
+  double Swim(size_t i, int iteration) {
+    Fish& fish = fish_[i];
+    const double y = Food(fish.pos);
+    double visual = p_.visual;
+    if (p_.dynamic_visual) {
+      const double lambda = p_.feedback_gain * std::max(0.0, 1.0 - y / dist_min_);
+      visual = p_.visual * std::exp(-lambda * iteration / std::max(1, p_.max_generations));
+      // Never narrower than the smallest step (ours): a fish always sees where it can swim.
+      visual = std::max(visual, p_.step_min);
+    }
+    double step = std::numeric_limits<double>::infinity();
+    if (p_.adaptive_step) step = (visual >= p_.step_max ? 2.0 : 1.0) * p_.step_min;
+
+    std::vector<Cell> allowed;
+    for (const Cell& to : moves_.ValidMoves(fish.pos)) {
+      if (Dist(fish.pos, to) <= step + 1e-9) allowed.push_back(to);
+    }
+    if (!allowed.empty()) {
+      std::optional<Cell> target = SocialTarget(i, y, visual);
+      if (!target) target = PreyTarget(fish.pos, y, visual);
+      Cell to = allowed[rng_.UniformInt(0, static_cast<int64_t>(allowed.size()) - 1)];
+      if (target) {
+        const double now = Dist(fish.pos, *target);
+        std::vector<Cell> closer;
+        for (const Cell& c : allowed) {
+          if (Dist(c, *target) < now - 1e-12) closer.push_back(c);
+        }
+        if (!closer.empty()) to = closer[rng_.UniformInt(0, closer.size() - 1)];
+      }
+      fish.pos = to;
+      fish.trail.push_back(to);
+    }
+    if (fish.pos == space_.goal) return Arrive(fish, iteration);
+    const double f = Unreached(fish.pos);
+    if (best_cells_.empty()) Offer(f, iteration);
+    return f;
+  }
+
+  double Arrive(Fish& fish, int iteration) {
+    std::vector<Cell> cells = fish.trail;
+    RemoveLoops(cells);
+    const double length = CellPathLength(*space_.grid, cells);
+    if (p_.feasible_solutions) {
+      if (best_cells_.empty() || length < best_fitness_ - 1e-12) best_cells_ = cells;
+      Offer(length, iteration);
+      fish = Fish{space_.start, {space_.start}};
+    } else if (best_cells_.empty()) {
+      best_cells_ = cells;  // the first fish to reach the goal ends the search
+      Offer(length, iteration);
+    }
+    return length;
+  }
+
+  // Follow / swarm: the better of the best neighbour and the neighbours' centre, when it beats
+  // the fish's own place and the view is not crowded.
+  std::optional<Cell> SocialTarget(size_t i, double y, double visual) {
+    const Cell me = fish_[i].pos;
+    int count = 0;
+    double cx = 0.0, cy = 0.0;
+    std::optional<Cell> best;
+    double best_y = y;
+    for (size_t j = 0; j < fish_.size(); ++j) {
+      if (j == i || Dist(me, fish_[j].pos) > visual) continue;
+      ++count;
+      cx += fish_[j].pos.x;
+      cy += fish_[j].pos.y;
+      const double yj = Food(fish_[j].pos);
+      if (yj < best_y) {
+        best_y = yj;
+        best = fish_[j].pos;
+      }
+    }
+    if (count == 0 || static_cast<double>(count) / fish_.size() > p_.crowding) {
+      return std::nullopt;
+    }
+    const Cell centre{static_cast<int>(std::lround(cx / count)),
+                      static_cast<int>(std::lround(cy / count))};
+    const double yc = Food(centre);
+    if (yc < best_y && !(centre == me)) return centre;
+    return best;
+  }
+
+  // Prey: the first of try_number random usable cells in view that is closer to the goal.
+  std::optional<Cell> PreyTarget(Cell me, double y, double visual) {
+    const int reach = static_cast<int>(std::floor(visual));
+    if (reach < 1) return std::nullopt;
+    for (int t = 0; t < p_.try_number; ++t) {
+      const Cell c{me.x + static_cast<int>(rng_.UniformInt(-reach, reach)),
+                   me.y + static_cast<int>(rng_.UniformInt(-reach, reach))};
+      if (Dist(me, c) > visual || !moves_.Usable(c)) continue;
+      if (Food(c) < y) return c;
+    }
+    return std::nullopt;
+  }
+
+  const FishSwarmParams& p_;
+  const Problem& problem_;
+  const GridSpace& space_;
+  GridMoves moves_;
+  Rng rng_;
+  std::vector<Fish> fish_;
+  std::vector<Cell> best_cells_;
+  double best_fitness_ = 0.0;
+  int best_iteration_ = 0;
+  int64_t evaluations_ = 0;
+  double unreached_offset_ = 0.0;
+  double dist_min_ = 1.0;
+};
+
+const char* NeighbourhoodName(Neighbourhood n) {
+  switch (n) {
+    case Neighbourhood::k4:
+      return "4";
+    case Neighbourhood::k8:
+      return "8";
+    case Neighbourhood::k24:
+      return "24";
+  }
+  return "8";
+}
+
+PlannerInfo FishInfo(FishSwarmParams::Variant variant, std::string id, std::string description) {
+  PlannerInfo info;
+  info.id = std::move(id);
+  info.description = std::move(description);
+  info.seed_paper = "003_a7a21fa31fe93d23.txt";
+  info.encoding = Encoding::kGridNodes;
+  info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
+  info.params = FishSwarmParams::Specs(variant);
+  info.factory = [](const ParamSet& set) {
+    return std::make_unique<FishSwarmPlanner>(FishSwarmParams::From(set));
+  };
+  return info;
+}
+
+}  // namespace
+
+FishSwarmParams FishSwarmParams::Defaults(Variant variant) {
+  FishSwarmParams p;
+  if (variant != Variant::kAfsa) {
+    p.neighbourhood = Neighbourhood::k24;
+    p.segment_check = true;
+  }
+  if (variant == Variant::kIdafsa) {
+    p.feasible_solutions = p.dynamic_visual = p.adaptive_step = true;
+  }
+  return p;
+}
+
+std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
+  const FishSwarmParams d = Defaults(variant);
+  return {
+      ParamSpec::Enum("neighbourhood", NeighbourhoodName(d.neighbourhood), {"4", "8", "24"},
+                      "cells a fish may move to: 4, 8 or 24 (16 directions, steps up to 2√2)"),
+      ParamSpec::Bool("segment_check", d.segment_check,
+                      "a move's segment must touch no blocked cell (the Dijkstra check)"),
+      ParamSpec::Bool("feasible_solutions", d.feasible_solutions,
+                      "fish reaching the goal record their trail and restart; the answer is the "
+                      "shortest record"),
+      ParamSpec::Bool("dynamic_visual", d.dynamic_visual, "feedback visual of eq 9"),
+      ParamSpec::Bool("adaptive_step", d.adaptive_step, "adaptive step of eqs 10-11"),
+      ParamSpec::Int("population", d.population, 1, 100000, "fish", "N"),
+      ParamSpec::Int("try_number", d.try_number, 1, 10000, "tries", "prey attempts"),
+      ParamSpec::Int("max_generations", d.max_generations, 1, 1000000, "iterations", "MAXGEN"),
+      ParamSpec::Double("visual", d.visual, 0.0, 1e6, "cells", "visual (visual_max with eq 9)"),
+      ParamSpec::Double("crowding", d.crowding, 0.0, 1.0, "", "δ, crowding factor"),
+      ParamSpec::Double("step_min", d.step_min, 1.0, 1e6, "cells", "step_min of eq 10"),
+      ParamSpec::Double("step_max", d.step_max, 1.0, 1e6, "cells", "step_max of eq 11"),
+      ParamSpec::Double("feedback_gain", d.feedback_gain, 0.0, 1e6, "",
+                        "m of eq 9 (paper: 17 on 10x10, 10 on 20x20)"),
+      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
+                        "cell size when a shape world is rasterised")
+          .Ours(),
+  };
+}
+
+FishSwarmParams FishSwarmParams::From(const ParamSet& set) {
+  FishSwarmParams p;
+  const std::string& n = set.Enum("neighbourhood");
+  p.neighbourhood = n == "4"    ? Neighbourhood::k4
+                    : n == "24" ? Neighbourhood::k24
+                                : Neighbourhood::k8;
+  p.segment_check = set.Bool("segment_check");
+  p.feasible_solutions = set.Bool("feasible_solutions");
+  p.dynamic_visual = set.Bool("dynamic_visual");
+  p.adaptive_step = set.Bool("adaptive_step");
+  p.population = static_cast<int>(set.Int("population"));
+  p.try_number = static_cast<int>(set.Int("try_number"));
+  p.max_generations = static_cast<int>(set.Int("max_generations"));
+  p.visual = set.Double("visual");
+  p.crowding = set.Double("crowding");
+  p.step_min = set.Double("step_min");
+  p.step_max = set.Double("step_max");
+  p.feedback_gain = set.Double("feedback_gain");
+  p.resolution = set.Double("resolution");
+  return p;
+}
+
+absl::StatusOr<SearchResult> FishSwarmPlanner::Solve(const Problem& problem, const StopToken& stop,
+                                                     Observer& observer) {
+  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
+  if (!space.ok()) return space.status();
+  FishSwarmSearch search(params_, problem, *space);
+  return search.Run(stop, observer);
+}
+
+PlannerInfo AfsaInfo() {
+  return FishInfo(FishSwarmParams::Variant::kAfsa, "afsa",
+                  "Traditional artificial fish swarm on a grid (prey, swarm, follow, random) with "
+                  "a 4-, 8- or 24-cell neighbourhood; a move needs only a free target cell, so "
+                  "paths may cut corners or jump obstacles (then they are reported as not "
+                  "collision-free). The search ends when the first fish reaches the goal; its "
+                  "trail, loops removed, is the answer. Ours: the fitness streamed before any "
+                  "fish arrives is a bound on path lengths plus the best distance to the goal.");
+}
+
+PlannerInfo DafsaInfo() {
+  return FishInfo(FishSwarmParams::Variant::kDafsa, "dafsa",
+                  "Fish swarm with the 16-direction 24-cell neighbourhood whose moves are "
+                  "segment-checked (touch no blocked cell, corners included), valid moves shared "
+                  "per cell. Otherwise as `afsa`.");
+}
+
+PlannerInfo IdafsaInfo() {
+  return FishInfo(
+      FishSwarmParams::Variant::kIdafsa, "idafsa",
+      "Improved fish swarm (IDAFSA-S16): `dafsa` plus a feasible-solution set (every "
+      "fish reaching the goal records its trail and restarts; the answer is the "
+      "shortest record), dynamic feedback visual visual_max*exp(-λt/T), "
+      "λ = m(1 - dist/DistMin) (ours: λ clamped at 0 and the visual at step_min, so a fish "
+      "near the goal still sees its neighbours), and adaptive step "
+      "(2*step_min while visual >= step_max, else step_min). Runs MAXGEN "
+      "iterations.");
+}
+
+}  // namespace swarmplan

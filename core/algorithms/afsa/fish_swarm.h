@@ -1,0 +1,62 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/grid_ops/grid_moves.h"
+#include "core/params.h"
+#include "core/planner.h"
+#include "core/registry.h"
+
+namespace swarmplan {
+
+// The artificial fish swarm family on grids (Li, Du & Jia, seed 003), one implementation whose
+// variants are parameters:
+//   afsa:   4-, 8- or 24-neighbourhood; a move only needs a free target cell (the paper's
+//           traditional AFSA may jump over obstacles or cut corners; such paths are reported
+//           as not collision-free).
+//   dafsa:  24-neighbourhood, every move's segment checked (touches no blocked cell).
+//   idafsa: dafsa + feasible-solution set (fish that reach the goal record their trail and
+//           start again; the answer is the shortest record), dynamic feedback visual (eq 9) and
+//           adaptive step (eqs 10-11).
+// Food concentration is the Euclidean distance to the goal. Behaviours: follow and swarm when a
+// better, uncrowded (n_f/N <= δ) place is in view, else prey (try_number random cells in view),
+// else a random move; stepping toward a target picks a random valid move that gets closer to
+// it. Valid moves per cell are computed once and shared by all fish.
+struct FishSwarmParams {
+  Neighbourhood neighbourhood = Neighbourhood::k8;
+  bool segment_check = false;
+  bool feasible_solutions = false;
+  bool dynamic_visual = false;
+  bool adaptive_step = false;
+  int population = 50;  // N
+  int try_number = 8;
+  int max_generations = 100;             // MAXGEN
+  double visual = 5.0;                   // visual (visual_max for idafsa), cells
+  double crowding = 0.618;               // δ
+  double step_min = 1.4142135623730951;  // cells
+  double step_max = 2.8284271247461903;  // cells
+  double feedback_gain = 17.0;           // m of eq 9 (17 on 10x10, 10 on 20x20)
+  double resolution = 1.0;               // cell size on shape worlds (ours)
+
+  enum class Variant { kAfsa, kDafsa, kIdafsa };
+  static FishSwarmParams Defaults(Variant variant);
+  static std::vector<ParamSpec> Specs(Variant variant);
+  static FishSwarmParams From(const ParamSet& set);
+};
+
+class FishSwarmPlanner final : public Planner {
+ public:
+  explicit FishSwarmPlanner(FishSwarmParams params) : params_(params) {}
+  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
+                                     Observer& observer) override;
+
+ private:
+  FishSwarmParams params_;
+};
+
+PlannerInfo AfsaInfo();
+PlannerInfo DafsaInfo();
+PlannerInfo IdafsaInfo();
+
+}  // namespace swarmplan

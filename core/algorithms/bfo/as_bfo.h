@@ -1,0 +1,45 @@
+#pragma once
+
+#include <vector>
+
+#include "core/params.h"
+#include "core/planner.h"
+#include "core/registry.h"
+
+namespace swarmplan {
+
+// AS-BFO (Long et al., seed 001): bacterial foraging on an 8-connected grid. A bacterium is a
+// variable-length cell path from start to goal. Chemotaxis tumbles a random interior cell to a
+// random usable neighbour, repairs the gaps to its neighbours with A* and removes loops; the
+// swim repeats the same tumble direction while it shortens the path (at most Ns times).
+// Reproduction keeps the healthier half (lower accumulated length); elimination-dispersal
+// replaces each bacterium with a new random path with probability Ped.
+struct AsBfoParams {
+  int population = 50;
+  int chemotactic_steps = 5;              // Nc
+  int reproduction_steps = 2;             // Nre
+  int elimination_steps = 2;              // Ned
+  int swim_length = 4;                    // Ns (ours)
+  double elimination_probability = 0.25;  // Ped (ours)
+  int max_waypoints = 3;                  // random cells an initial path passes through (ours)
+  bool keep_worse_tumbles = true;         // classic BFO moves even when the tumble is worse (ours)
+  bool allow_corner_cutting = false;
+  double resolution = 1.0;  // cell size when planning on a shape world (ours)
+
+  static std::vector<ParamSpec> Specs();
+  static AsBfoParams From(const ParamSet& set);
+};
+
+class AsBfoPlanner final : public Planner {
+ public:
+  explicit AsBfoPlanner(AsBfoParams params) : params_(params) {}
+  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
+                                     Observer& observer) override;
+
+ private:
+  AsBfoParams params_;
+};
+
+PlannerInfo AsBfoInfo();
+
+}  // namespace swarmplan

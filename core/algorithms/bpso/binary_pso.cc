@@ -1,0 +1,290 @@
+#include "core/algorithms/bpso/binary_pso.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_format.h"
+#include "core/geometry/collision.h"
+#include "core/geometry/obstacle_vertices.h"
+#include "core/graph/grid_search.h"
+#include "core/grid_ops/grid_space.h"
+#include "core/random.h"
+
+namespace swarmplan {
+namespace {
+
+using SegmentBlocked = std::function<bool(const Point2&, const Point2&)>;
+
+// The centres of free cells diagonally outside the convex corners of the blocked region,
+// sorted by x then y.
+std::vector<Point2> GridCornerVertices(const OccupancyGrid& grid, double clearance) {
+  auto usable = [&](int x, int y) { return CellUsable(grid, Cell{x, y}, clearance); };
+  std::vector<Cell> cells;
+  for (int y = 1; y < grid.height(); ++y) {
+    for (int x = 1; x < grid.width(); ++x) {
+      const Cell around[4] = {{x - 1, y - 1}, {x, y - 1}, {x - 1, y}, {x, y}};
+      int blocked = -1, count = 0;
+      for (int i = 0; i < 4; ++i) {
+        if (!usable(around[i].x, around[i].y)) {
+          blocked = i;
+          ++count;
+        }
+      }
+      if (count == 1) cells.push_back(around[3 - blocked]);
+    }
+  }
+  std::sort(cells.begin(), cells.end(),
+            [](Cell a, Cell b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::vector<Point2> out;
+  for (const Cell& c : cells) out.push_back(grid.CellCenter(c));
+  return out;
+}
+
+double Sigmoid(double x) { return 1.0 / (1.0 + std::exp(-x)); }
+
+class BinaryPsoSearch {
+ public:
+  BinaryPsoSearch(const BinaryPsoParams& p, const Problem& problem, std::vector<Point2> vertices,
+                  SegmentBlocked blocked, double penalty)
+      : p_(p),
+        problem_(problem),
+        blocked_(std::move(blocked)),
+        penalty_(penalty),
+        rng_(problem.seed),
+        start_(problem.start.x(), problem.start.y()),
+        goal_(problem.goal.x(), problem.goal.y()) {
+    // Visiting order: projection on the start-goal line.
+    const Point2 axis = goal_ - start_;
+    const double len2 = std::max(axis.squaredNorm(), 1e-300);
+    std::vector<std::pair<double, Point2>> keyed;
+    for (const Point2& v : vertices) keyed.push_back({(v - start_).dot(axis) / len2, v});
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [t, v] : keyed) vertices_.push_back(v);
+  }
+
+  SearchResult Run(const StopToken& stop, Observer& observer) {
+    SearchResult result;
+    const size_t d = vertices_.size();
+    const int n = std::max(1, static_cast<int>(std::ceil(p_.swarm_factor * d)));
+    std::vector<std::vector<uint8_t>> bits(n, std::vector<uint8_t>(d));
+    std::vector<std::vector<double>> aux(n, std::vector<double>(d)), vel = aux;
+    for (int i = 0; i < n; ++i) {
+      for (size_t k = 0; k < d; ++k) {
+        bits[i][k] = rng_.Bernoulli(0.5) ? 1 : 0;
+        aux[i][k] = (bits[i][k] ? 1.0 : -1.0) * rng_.Uniform();  // agrees with the bit (ours)
+        vel[i][k] = rng_.Uniform(-1.0, 1.0);
+      }
+    }
+    std::vector<double> fit(n);
+    for (int i = 0; i < n; ++i) fit[i] = Fitness(bits[i]);
+    std::vector<std::vector<uint8_t>> pbest_bits = bits;
+    std::vector<std::vector<double>> pbest_aux = aux;
+    std::vector<double> pbest_fit = fit;
+    int g = static_cast<int>(std::min_element(fit.begin(), fit.end()) - fit.begin());
+    std::vector<uint8_t> gbest_bits = bits[g];
+    std::vector<double> gbest_aux = aux[g];
+    double gbest_fit = fit[g];
+
+    ConvergenceLog log(observer);
+    int iteration = 0;
+    for (; iteration < p_.iterations; ++iteration) {
+      if (StopReason why = stop.Check(iteration); why != StopReason::kNone) {
+        result.stop_reason = why;
+        break;
+      }
+      const double w = p_.w_max - iteration * (p_.w_max - p_.w_min) / p_.iterations;
+      double sum = 0.0;
+      for (int i = 0; i < n; ++i) {
+        for (size_t k = 0; k < d; ++k) {
+          // Plain BPSO uses the bits themselves as positions (eq 1).
+          const double x = p_.double_structure ? aux[i][k] : bits[i][k];
+          const double pb = p_.double_structure ? pbest_aux[i][k] : pbest_bits[i][k];
+          const double gb = p_.double_structure ? gbest_aux[k] : gbest_bits[k];
+          double v =
+              w * vel[i][k] + p_.c1 * rng_.Uniform() * (pb - x) + p_.c2 * rng_.Uniform() * (gb - x);
+          v = std::clamp(v, -p_.v_max, p_.v_max);
+          vel[i][k] = v;
+          double s;
+          if (p_.double_structure) {
+            aux[i][k] += v;
+            s = Sigmoid(aux[i][k]);
+          } else {
+            s = Sigmoid(v);
+          }
+          bits[i][k] = s > rng_.Uniform() ? 1 : 0;
+          if (p_.mutation_probability > 0 && rng_.Bernoulli(p_.mutation_probability)) {
+            bits[i][k] ^= 1;
+            aux[i][k] = -aux[i][k];  // the assistant position follows the flipped bit (ours)
+          }
+        }
+        fit[i] = Fitness(bits[i]);
+        sum += fit[i];
+        if (fit[i] < pbest_fit[i]) {
+          pbest_fit[i] = fit[i];
+          pbest_bits[i] = bits[i];
+          pbest_aux[i] = aux[i];
+        }
+        if (fit[i] < gbest_fit - 1e-12) {
+          gbest_fit = fit[i];
+          gbest_bits = bits[i];
+          gbest_aux = aux[i];
+          result.best_iteration = iteration;
+        }
+      }
+      log.Record(iteration, gbest_fit, sum / n, evaluations_, gbest_fit < penalty_);
+    }
+    result.iterations = iteration;
+    result.evaluations = evaluations_;
+    result.convergence = log.Take();
+    result.fitness = gbest_fit;
+    for (const Point2& p : PathOf(gbest_bits)) result.path.emplace_back(p.x(), p.y(), 0.0);
+    result.found = MakeCollisionChecker(*problem_.map)->PathFree(result.path, problem_.clearance);
+    return result;
+  }
+
+ private:
+  std::vector<Point2> PathOf(const std::vector<uint8_t>& bits) const {
+    std::vector<Point2> path{start_};
+    for (size_t k = 0; k < bits.size(); ++k) {
+      if (bits[k]) path.push_back(vertices_[k]);
+    }
+    path.push_back(goal_);
+    return path;
+  }
+
+  double Fitness(const std::vector<uint8_t>& bits) {
+    ++evaluations_;
+    const std::vector<Point2> path = PathOf(bits);
+    double length = 0.0;
+    bool crosses = false;
+    for (size_t i = 1; i < path.size(); ++i) {
+      length += (path[i] - path[i - 1]).norm();
+      if (!crosses && blocked_(path[i - 1], path[i])) crosses = true;
+    }
+    return length + (crosses ? penalty_ : 0.0);
+  }
+
+  const BinaryPsoParams& p_;
+  const Problem& problem_;
+  SegmentBlocked blocked_;
+  double penalty_;
+  Rng rng_;
+  Point2 start_, goal_;
+  std::vector<Point2> vertices_;
+  int64_t evaluations_ = 0;
+};
+
+}  // namespace
+
+std::vector<ParamSpec> BinaryPsoParams::Specs() {
+  const BinaryPsoParams d;
+  return {
+      ParamSpec::Bool("double_structure", d.double_structure,
+                      "continuous assistant positions drive the bits (eqs 6-7); false: plain "
+                      "BPSO (eqs 1-2)"),
+      ParamSpec::Double("mutation_probability", d.mutation_probability, 0.0, 1.0, "",
+                        "per-bit flip probability after each update (0: no mutation)"),
+      ParamSpec::Double("swarm_factor", d.swarm_factor, 0.01, 100.0, "",
+                        "swarm size as a multiple of the number of vertices"),
+      ParamSpec::Int("iterations", d.iterations, 1, 1000000, "iterations", "iter_max"),
+      ParamSpec::Double("c1", d.c1, 0.0, 10.0, "", "cognitive coefficient"),
+      ParamSpec::Double("c2", d.c2, 0.0, 10.0, "", "social coefficient"),
+      ParamSpec::Double("w_max", d.w_max, 0.0, 2.0, "", "inertia at the first iteration"),
+      ParamSpec::Double("w_min", d.w_min, 0.0, 2.0, "", "inertia at the last iteration"),
+      ParamSpec::Double("v_max", d.v_max, 0.01, 100.0, "", "velocity clamp").Ours(),
+      ParamSpec::Double("penalty_factor", d.penalty_factor, 0.0, 1e9, "",
+                        "penalty N for a path through an obstacle, times the map's diagonal")
+          .Ours(),
+      ParamSpec::Double("circle_tolerance", d.circle_tolerance, 1e-6, 0.1, "",
+                        "circles become polygons within this fraction of the world's larger side")
+          .Ours(),
+      ParamSpec::Int("max_vertices", d.max_vertices, 1, 1000000, "vertices",
+                     "refuse maps with more obstacle vertices (swarm and particle both grow "
+                     "with the count)")
+          .Ours(),
+  };
+}
+
+BinaryPsoParams BinaryPsoParams::From(const ParamSet& set) {
+  BinaryPsoParams p;
+  p.double_structure = set.Bool("double_structure");
+  p.mutation_probability = set.Double("mutation_probability");
+  p.swarm_factor = set.Double("swarm_factor");
+  p.iterations = static_cast<int>(set.Int("iterations"));
+  p.c1 = set.Double("c1");
+  p.c2 = set.Double("c2");
+  p.w_max = set.Double("w_max");
+  p.w_min = set.Double("w_min");
+  p.v_max = set.Double("v_max");
+  p.penalty_factor = set.Double("penalty_factor");
+  p.circle_tolerance = set.Double("circle_tolerance");
+  p.max_vertices = static_cast<int>(set.Int("max_vertices"));
+  return p;
+}
+
+absl::StatusOr<SearchResult> BinaryPsoPlanner::Solve(const Problem& problem, const StopToken& stop,
+                                                     Observer& observer) {
+  if (problem.map == nullptr) return absl::InvalidArgumentError("map: no map given");
+  std::vector<Point2> vertices;
+  SegmentBlocked blocked;
+  double diagonal = 1.0;
+  std::shared_ptr<const GrownObstacles> grown;
+  std::shared_ptr<const CollisionChecker> checker;
+  if (const ShapeWorld* world = problem.map->world()) {
+    const double side = std::max(world->bounds().Width(), world->bounds().Height());
+    grown = std::make_shared<const GrownObstacles>(
+        GrowObstacles(*world, problem.clearance, params_.circle_tolerance * side));
+    for (const GrownObstacles::Corner& c : grown->corners) vertices.push_back(c.point);
+    blocked = [grown](const Point2& a, const Point2& b) { return grown->Blocks(a, b); };
+    diagonal = std::hypot(world->bounds().Width(), world->bounds().Height());
+  } else if (const OccupancyGrid* grid = problem.map->grid()) {
+    vertices = GridCornerVertices(*grid, problem.clearance);
+    checker = MakeCollisionChecker(*problem.map);
+    const double clearance = problem.clearance;
+    blocked = [checker, clearance](const Point2& a, const Point2& b) {
+      return !checker->SegmentFree(Point3(a.x(), a.y(), 0), Point3(b.x(), b.y(), 0), clearance);
+    };
+    diagonal = std::hypot(grid->width(), grid->height()) * grid->resolution();
+  } else {
+    return absl::InvalidArgumentError("bpso plans on shape worlds and occupancy grids");
+  }
+  if (static_cast<int64_t>(vertices.size()) > params_.max_vertices) {
+    return absl::FailedPreconditionError(absl::StrFormat(
+        "bpso: the map has %d obstacle vertices, more than max_vertices = %d; the swarm "
+        "(1.5x the vertices) would be too slow. Raise max_vertices or use another planner",
+        static_cast<int>(vertices.size()), params_.max_vertices));
+  }
+  BinaryPsoSearch search(params_, problem, std::move(vertices), std::move(blocked),
+                         params_.penalty_factor * diagonal);
+  return search.Run(stop, observer);
+}
+
+PlannerInfo BinaryPsoInfo() {
+  PlannerInfo info;
+  info.id = "bpso";
+  info.description =
+      "Improved binary PSO on obstacle vertices: one bit per vertex of the obstacles grown by "
+      "the clearance (numbered by x, then y); the path visits the chosen vertices ordered by "
+      "their projection on the start-goal line (ours; the paper's x order when the goal lies to "
+      "the right). Fitness: length plus a penalty N when a segment enters an obstacle. Double "
+      "structure (continuous assistant positions, eqs 6-7) with per-bit mutation 0.1; "
+      "plain BPSO with double_structure=false, mutation_probability=0. Swarm 1.5x the vertex "
+      "count, c1 = c2 = 2, w 0.9 -> 0.4, 100 iterations. Ours: |v| <= 4, N = 100 x the map "
+      "diagonal, a mutated bit's assistant position is negated; on grids the vertices are the "
+      "free cells diagonally outside convex corners of blocked regions.";
+  info.seed_paper = "004_ac85592f90e54f33.txt";
+  info.encoding = Encoding::kVertexSubset;
+  info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
+  info.params = BinaryPsoParams::Specs();
+  info.factory = [](const ParamSet& set) {
+    return std::make_unique<BinaryPsoPlanner>(BinaryPsoParams::From(set));
+  };
+  return info;
+}
+
+}  // namespace swarmplan
