@@ -2,6 +2,10 @@
 
 namespace swarmplan {
 
-void RegisterAllPlanners(Registry& registry) { RegisterExactPlanners(registry); }
+void RegisterAllPlanners(Registry& registry) {
+  RegisterExactPlanners(registry);
+  RegisterBeetlePlanners(registry);
+  RegisterGridPlanners(registry);
+}
 
 }  // namespace swarmplan

@@ -1,0 +1,262 @@
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/algorithms/bas/beetle_antennae.h"
+#include "core/algorithms/bas/terrain_aco.h"
+#include "core/algorithms/bas/terrain_objective.h"
+#include "core/algorithms/bso/register_beetle.h"
+#include "core/operators/waypoint_params.h"
+
+namespace swarmplan {
+namespace {
+
+constexpr char kSeedPaper[] =
+    "Improved beetle antennae search for 3D path planning: LFS-BAS, ACO-BAS, SIO-BAS "
+    "(seed 000)";
+
+// One member of the family: which mechanisms it switches on.
+struct BasVariant {
+  std::string id;
+  std::string description;
+  int iterations = 500;
+  int population = 0;     // 0: a single beetle, no population parameter
+  bool lfs = false;       // local fast search
+  bool sio = false;       // eta parameters of the direction mix
+  bool aco_init = false;  // the first path comes from one ACO generation (terrain only)
+};
+
+std::vector<ParamSpec> TerrainPenaltyParam() {
+  return {ParamSpec::Double("terrain_penalty", 100.0, 0.0, 1e12, "",
+                            "fitness added per unit of depth below ground + clearance, summed "
+                            "over samples every quarter cell (terrain only)")
+              .Ours()};
+}
+
+std::vector<ParamSpec> AcoParams() {
+  return {
+      ParamSpec::Int("ants", 20, 1, 10000, "", "ants per generation"),
+      ParamSpec::Double("aco_alpha", 1.0, 0.0, 10.0, "", "pheromone exponent").Ours(),
+      ParamSpec::Double("local_keep", 0.5, 0.0, 1.0, "",
+                        "local update tau <- local_keep * tau on visited cells"),
+      ParamSpec::Double("global_keep", 0.8, 0.0, 1.0, "",
+                        "global update tau <- global_keep * tau + (1 - global_keep) q / f_best"),
+      ParamSpec::Double("q", 100.0, 0.0, 1e9, "", "pheromone deposit constant"),
+  };
+}
+
+TerrainAcoOptions AcoOptionsFrom(const ParamSet& params) {
+  TerrainAcoOptions options;
+  options.ants = static_cast<int>(params.Int("ants"));
+  options.alpha = params.Double("aco_alpha");
+  options.local_keep = params.Double("local_keep");
+  options.global_keep = params.Double("global_keep");
+  options.q = params.Double("q");
+  return options;
+}
+
+std::vector<ParamSpec> BasParams(const BasVariant& v) {
+  std::vector<ParamSpec> specs;
+  if (v.aco_init) {
+    specs.push_back(ParamSpec::Int("iterations", v.iterations, 1, 1000000, "iterations",
+                                   "BAS iterations after the ACO initial path"));
+    AppendParams(specs, AcoParams());
+  } else {
+    specs = WaypointParams(v.iterations, 2);  // 2D use: the paper's two path points
+    specs.push_back(ParamSpec::Bool("pso_mix", false,
+                                    "2D: mix the direction with a PSO term b <- m b + c1 (x_best "
+                                    "- x) rand (eq 19)"));
+    specs.push_back(ParamSpec::Double("pso_m", 1.0, 0.0, 100.0, "", "m of eq 19"));
+    specs.push_back(ParamSpec::Double("pso_c1", 1.5, 0.0, 100.0, "", "c1 of eq 19"));
+  }
+  if (v.population > 0) {
+    specs.push_back(ParamSpec::Int("population", v.population, 1, 10000, "", "beetles"));
+  }
+  specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells", "initial step delta0"));
+  specs.push_back(ParamSpec::Double("step_decay", 0.998, 0.0, 1.0, "", "lambda1: delta decay"));
+  specs.push_back(ParamSpec::Double("c", 2.0, 1e-9, 1e9, "", "antennae length d = delta / c"));
+  specs.push_back(ParamSpec::Double("theta0", 21.0, 0.0, 1e9, "cells",
+                                    "initial rationality step (terrain, eq 13)"));
+  specs.push_back(
+      ParamSpec::Double("theta_decay", 0.998, 0.0, 1.0, "", "lambda2: theta decay (eq 14)"));
+  specs.push_back(ParamSpec::Double("band_step", 0.5, 1e-9, 1e9, "cells",
+                                    "c': widening of the initial band C_ini per failed draw")
+                      .Ours());
+  AppendParams(specs, TerrainPenaltyParam());
+  if (v.lfs) {
+    specs.push_back(
+        ParamSpec::Int("lfs_steps", 10, 0, 100000, "", "m: local fast search steps").Ours());
+    specs.push_back(ParamSpec::Double("lfs_lambda", 0.95, 0.0, 1.0, "", "lambda of eq 9").Ours());
+    specs.push_back(ParamSpec::Double("lfs_a", 1.0, 1e-9, 1e9, "", "a of eq 9").Ours());
+    specs.push_back(ParamSpec::Double("lfs_b", 1.0, 0.0, 1e9, "", "b of eq 9").Ours());
+    specs.push_back(ParamSpec::Double("lfs_gamma", 1.0, 0.0, 1e9, "", "gamma of eq 9").Ours());
+  }
+  if (v.sio) {
+    specs.push_back(
+        ParamSpec::Double("eta1", 0.6, 0.0, 1e9, "", "weight of the random direction").Ours());
+    specs.push_back(
+        ParamSpec::Double("eta2", 0.2, 0.0, 1e9, "", "weight toward the swarm's best").Ours());
+    specs.push_back(ParamSpec::Double("eta3", 0.2, 0.0, 1e9, "",
+                                      "weight of the previous better-antenna direction")
+                        .Ours());
+  }
+  return specs;
+}
+
+PathSearchPlanner::ObjectiveFactory BasObjectiveFactory(
+    std::optional<WaypointFitnessOptions> waypoints, double terrain_penalty) {
+  return [waypoints, terrain_penalty](
+             const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
+    if (problem.map != nullptr && problem.map->is_3d()) {
+      absl::StatusOr<std::unique_ptr<TerrainObjective>> objective =
+          TerrainObjective::Create(problem, terrain_penalty);
+      if (!objective.ok()) return objective.status();
+      return std::unique_ptr<PathObjective>(std::move(*objective));
+    }
+    if (!waypoints.has_value()) {
+      return absl::InvalidArgumentError("this planner needs a terrain map");
+    }
+    return WaypointObjectiveFactory(*waypoints)(problem);
+  };
+}
+
+std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& params) {
+  BeetleAntennaeOptions options;
+  options.population = static_cast<int>(IntOr(params, "population", 1));
+  options.step0 = params.Double("step0");
+  options.step_decay = params.Double("step_decay");
+  options.c = params.Double("c");
+  options.theta0 = params.Double("theta0");
+  options.theta_decay = params.Double("theta_decay");
+  options.band_step = params.Double("band_step");
+  options.lfs_steps = static_cast<int>(IntOr(params, "lfs_steps", 0));
+  options.lfs_lambda = DoubleOr(params, "lfs_lambda", options.lfs_lambda);
+  options.lfs_a = DoubleOr(params, "lfs_a", options.lfs_a);
+  options.lfs_b = DoubleOr(params, "lfs_b", options.lfs_b);
+  options.lfs_gamma = DoubleOr(params, "lfs_gamma", options.lfs_gamma);
+  options.eta1 = DoubleOr(params, "eta1", 1.0);
+  options.eta2 = DoubleOr(params, "eta2", 0.0);
+  options.eta3 = DoubleOr(params, "eta3", 0.0);
+  options.pso_mix = BoolOr(params, "pso_mix", false);
+  options.pso_m = DoubleOr(params, "pso_m", options.pso_m);
+  options.pso_c1 = DoubleOr(params, "pso_c1", options.pso_c1);
+  std::optional<WaypointFitnessOptions> waypoints;
+  if (!v.aco_init) waypoints = WaypointFitnessFrom(params);
+  std::optional<TerrainAcoOptions> aco;
+  if (v.aco_init) aco = AcoOptionsFrom(params);
+  return std::make_unique<PathSearchPlanner>(
+      BasObjectiveFactory(waypoints, params.Double("terrain_penalty")),
+      [options, aco](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
+                     Observer& observer) -> absl::StatusOr<SearchOutcome> {
+        std::optional<Eigen::VectorXd> seed;
+        int64_t initial_evaluations = 0;
+        if (aco.has_value()) {
+          auto* terrain = dynamic_cast<TerrainObjective*>(&objective);
+          if (terrain == nullptr) return absl::InvalidArgumentError("needs a terrain map");
+          absl::StatusOr<TerrainAco> colony = TerrainAco::Create(*terrain, *aco);
+          if (!colony.ok()) return colony.status();
+          Evaluation best;
+          double mean = 0.0;
+          seed = colony->Generation(rng, best, mean, initial_evaluations);
+        }
+        SearchOutcome out = RunBeetleAntennae(objective, options, t_max, rng, stop, observer, seed);
+        out.evaluations += initial_evaluations;
+        return out;
+      },
+      static_cast<int>(params.Int("iterations")));
+}
+
+void RegisterBas(Registry& registry, const BasVariant& v) {
+  PlannerInfo info;
+  info.id = v.id;
+  info.description = v.description;
+  info.seed_paper = kSeedPaper;
+  info.encoding = Encoding::kColumns;
+  info.map_kinds = {MapKind::kTerrain};
+  if (!v.aco_init) {
+    info.map_kinds.push_back(MapKind::kShapeWorld);
+    info.map_kinds.push_back(MapKind::kOccupancyGrid);
+  }
+  info.params = BasParams(v);
+  info.factory = [v](const ParamSet& params) { return MakeBasPlanner(v, params); };
+  MustRegisterPlanner(registry, std::move(info));
+}
+
+void RegisterTerrainAco(Registry& registry) {
+  PlannerInfo info;
+  info.id = "aco";
+  info.description =
+      "Ant colony on a terrain, the baseline of seed 000: ants build one waypoint per column "
+      "from the 5 x 5 (Y, Z) neighbourhood of the previous one, weighted by pheromone and "
+      "H = S x D x M (validity, short steps toward the goal, low flight); local and global "
+      "pheromone updates. Ours: the exact D and M terms, tau_min = 1e-3, unit height levels.";
+  info.seed_paper = kSeedPaper;
+  info.encoding = Encoding::kColumns;
+  info.map_kinds = {MapKind::kTerrain};
+  info.params.push_back(
+      ParamSpec::Int("iterations", 500, 1, 1000000, "iterations", "generations of the colony"));
+  AppendParams(info.params, AcoParams());
+  AppendParams(info.params, TerrainPenaltyParam());
+  info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
+    const TerrainAcoOptions aco = AcoOptionsFrom(params);
+    return std::make_unique<PathSearchPlanner>(
+        BasObjectiveFactory(std::nullopt, params.Double("terrain_penalty")),
+        [aco](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
+              Observer& observer) -> absl::StatusOr<SearchOutcome> {
+          auto* terrain = dynamic_cast<TerrainObjective*>(&objective);
+          if (terrain == nullptr) return absl::InvalidArgumentError("aco needs a terrain map");
+          absl::StatusOr<TerrainAco> colony = TerrainAco::Create(*terrain, aco);
+          if (!colony.ok()) return colony.status();
+          return colony->Run(t_max, rng, stop, observer);
+        },
+        static_cast<int>(params.Int("iterations")));
+  };
+  MustRegisterPlanner(registry, std::move(info));
+}
+
+constexpr char kModel[] =
+    " On a terrain: one waypoint (Y, Z) per column, fitness sum(sqrt(1 + dY^2 + dZ^2) + Z) "
+    "plus a penalty for flying below ground + clearance (ours), path rationality check "
+    "(eqs 13-14), first path drawn from the widening band C_ini (c' = 0.5 cells, ours). On 2D "
+    "maps: k = 2 waypoints joined by a cubic spline, fitness L (1 + M xi), optional PSO mix "
+    "(eq 19).";
+
+}  // namespace
+
+void RegisterBasPlanners(Registry& registry) {
+  RegisterBas(registry, {"bas",
+                         std::string("Beetle antennae search: one beetle, random direction b, "
+                                     "antennae x +- (delta/c) b, step delta toward the better "
+                                     "antenna, delta <- 0.998 delta.") +
+                             kModel,
+                         500});
+  RegisterBas(registry,
+              {"lfs-bas",
+               std::string("BAS with local fast search: when a step finds a new best, up to m "
+                           "antennae steps from the best with their own decaying step "
+                           "(eqs 9-11). Ours: m = 10, lambda = 0.95, a = b = gamma = 1.") +
+                   kModel,
+               500, 0, true});
+  RegisterBas(registry,
+              {"aco-bas",
+               "BAS started from the best path of one ACO generation (20 ants) on a terrain; "
+               "rationality check and step schedule as bas. Terrain only.",
+               500, 0, false, false, true});
+  RegisterBas(registry,
+              {"sio-bas",
+               std::string("Searching-information-oriented BAS: a population whose directions "
+                           "mix a random unit vector, the unit vector to the swarm's best and "
+                           "the previous better-antenna direction, b = normalise(eta1 b1 + eta2 "
+                           "b2 + eta3 b3) (eqs 16-18). Ours: eta = (0.6, 0.2, 0.2).") +
+                   kModel,
+               200, 5, false, true});
+  RegisterBas(registry,
+              {"multi-bas",
+               std::string("A population of independent BAS beetles (sio-bas with eta2 = eta3 "
+                           "= 0: no information sharing), the paper's Multi-BAS.") +
+                   kModel,
+               200, 5});
+  RegisterTerrainAco(registry);
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,69 @@
+#include "core/algorithms/baselines/ba.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace swarmplan {
+
+SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, int t_max, Rng& rng,
+                              const StopToken& stop, Observer& observer) {
+  const int dim = objective.dim();
+  const int n = options.population;
+  const Eigen::VectorXd span = objective.upper() - objective.lower();
+  std::vector<Eigen::VectorXd> x(n, Eigen::VectorXd(dim));
+  std::vector<Eigen::VectorXd> v(n, Eigen::VectorXd::Zero(dim));
+  std::vector<double> f(n), loudness(n, options.loudness0), pulse_rate(n, options.pulse_rate0);
+
+  SearchOutcome out;
+  out.best_fitness = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < dim; ++j) x[i][j] = rng.Uniform(objective.lower()[j], objective.upper()[j]);
+    const Evaluation e = objective.Evaluate(x[i]);
+    f[i] = e.fitness;
+    if (i == 0 || e.fitness < out.best_fitness) {
+      out.best_fitness = e.fitness;
+      out.best_x = x[i];
+      out.best_feasible = e.feasible;
+    }
+  }
+  out.evaluations = n;
+
+  Eigen::VectorXd candidate(dim);
+  RunIterations(t_max, stop, observer, out, [&](int t) {
+    double mean_loudness = 0.0;
+    for (double a : loudness) mean_loudness += a;
+    mean_loudness /= std::max(n, 1);
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double freq = options.f_min + (options.f_max - options.f_min) * rng.Uniform();
+      v[i] += (x[i] - out.best_x) * freq;
+      candidate = x[i] + v[i];
+      if (rng.Uniform() > pulse_rate[i]) {
+        for (int j = 0; j < dim; ++j) {
+          candidate[j] = out.best_x[j] +
+                         rng.Uniform(-1.0, 1.0) * mean_loudness * options.walk_fraction * span[j];
+        }
+      }
+      objective.Clamp(candidate);
+      const Evaluation e = objective.Evaluate(candidate);
+      ++out.evaluations;
+      if (e.fitness <= f[i] && rng.Uniform() < loudness[i]) {
+        x[i] = candidate;
+        f[i] = e.fitness;
+        loudness[i] *= options.alpha;
+        pulse_rate[i] = options.pulse_rate0 * (1.0 - std::exp(-options.gamma * t));
+      }
+      if (e.fitness <= out.best_fitness) {
+        out.best_fitness = e.fitness;
+        out.best_x = candidate;
+        out.best_feasible = e.feasible;
+      }
+      sum += f[i];
+    }
+    return IterationSummary{n > 0 ? sum / n : 0.0};
+  });
+  return out;
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,55 @@
+#include <memory>
+
+#include "core/algorithms/baselines/ba.h"
+#include "core/algorithms/bso/register_beetle.h"
+#include "core/operators/waypoint_params.h"
+
+namespace swarmplan {
+
+void RegisterBatPlanner(Registry& registry) {
+  PlannerInfo info;
+  info.id = "ba";
+  info.description =
+      "Bat algorithm (Yang 2010) over k waypoints joined by a cubic spline, fitness "
+      "L (1 + M xi), the BA baseline of seed 002: frequency-tuned velocities toward the best "
+      "bat, local walks around it at rate 1 - r, acceptance by loudness; alpha = gamma = 0.9. "
+      "Ours: f in [0, 2], A0 = 1, r0 = 0.5, local walk scaled by 1% of the span, k = 3.";
+  info.seed_paper = "";
+  info.encoding = Encoding::kWaypoints;
+  info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
+  info.params = WaypointParams(500, 3);
+  info.params.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "bats"));
+  info.params.push_back(ParamSpec::Double("f_min", 0.0, 0.0, 100.0, "", "lowest frequency").Ours());
+  info.params.push_back(
+      ParamSpec::Double("f_max", 2.0, 0.0, 100.0, "", "highest frequency").Ours());
+  info.params.push_back(
+      ParamSpec::Double("loudness0", 1.0, 0.0, 10.0, "", "initial loudness").Ours());
+  info.params.push_back(
+      ParamSpec::Double("pulse_rate0", 0.5, 0.0, 1.0, "", "final pulse rate r0").Ours());
+  info.params.push_back(ParamSpec::Double("alpha", 0.9, 0.0, 1.0, "", "loudness decay"));
+  info.params.push_back(ParamSpec::Double("gamma", 0.9, 0.0, 100.0, "", "pulse rate growth"));
+  info.params.push_back(ParamSpec::Double("walk_fraction", 0.01, 0.0, 1.0, "",
+                                          "local walk scale as a fraction of the span")
+                            .Ours());
+  info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
+    BatOptions options;
+    options.population = static_cast<int>(params.Int("population"));
+    options.f_min = params.Double("f_min");
+    options.f_max = params.Double("f_max");
+    options.loudness0 = params.Double("loudness0");
+    options.pulse_rate0 = params.Double("pulse_rate0");
+    options.alpha = params.Double("alpha");
+    options.gamma = params.Double("gamma");
+    options.walk_fraction = params.Double("walk_fraction");
+    return std::make_unique<PathSearchPlanner>(
+        WaypointObjectiveFactory(WaypointFitnessFrom(params)),
+        [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
+                  Observer& observer) -> absl::StatusOr<SearchOutcome> {
+          return RunBatAlgorithm(objective, options, t_max, rng, stop, observer);
+        },
+        static_cast<int>(params.Int("iterations")));
+  };
+  MustRegisterPlanner(registry, std::move(info));
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/map/point.h"
+
+namespace swarmplan {
+
+class Rng;
+
+struct Evaluation {
+  double fitness = 0.0;
+  bool feasible = false;  // the decoded path keeps the safety distance (always true off maps)
+};
+
+// A box-bounded minimisation problem over R^dim, the common ground of every swarm optimiser:
+// waypoint paths on 2D maps, column paths on terrain, and the test functions. Evaluate reuses
+// the objective's own buffers, so it is not const and one objective serves one search.
+class Objective {
+ public:
+  virtual ~Objective() = default;
+  virtual int dim() const = 0;
+  virtual const Eigen::VectorXd& lower() const = 0;
+  virtual const Eigen::VectorXd& upper() const = 0;
+  virtual Evaluation Evaluate(const Eigen::VectorXd& x) = 0;
+
+  // A path objective's decision vector drawn inside a band of half-width `band` (map units)
+  // around the straight start-goal path (the initial space C_ini of BAS eq 12). The default,
+  // for objectives without a path, draws uniformly in the box.
+  virtual void SampleAroundStraightPath(double band, Rng& rng, Eigen::VectorXd& x) const;
+  // A hook applied after each BAS move (the terrain path rationality check, eq 13); `theta` is
+  // the current rationality step. The default does nothing.
+  virtual void Repair(double /*theta*/, Eigen::VectorXd& /*x*/) const {}
+
+  void Clamp(Eigen::VectorXd& x) const { x = x.cwiseMax(lower()).cwiseMin(upper()); }
+};
+
+// An objective whose decision vectors are paths on a map.
+class PathObjective : public Objective {
+ public:
+  // The path a decision vector stands for, start first and goal last, as evaluated.
+  virtual Path Decode(const Eigen::VectorXd& x) = 0;
+};
+
+}  // namespace swarmplan

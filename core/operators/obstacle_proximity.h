@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "core/map/map.h"
+
+namespace swarmplan {
+
+// Counts the obstacles a polyline comes closer to than a threshold: the xi of the AEM-BSO
+// fitness L (1 + M xi). On a ShapeWorld every circle and polygon is one obstacle and distances
+// are exact segment distances. On an OccupancyGrid an obstacle is a connected component
+// (8-connected) of blocked cells; every cell closer than the threshold to a blocked cell (by the
+// grid's distance field) carries the label of the component reached first by a breadth-first
+// sweep from all blocked cells, computed once here; segments are walked at a quarter cell.
+// Leaving the map counts as one more obstacle. Built once per search; CountViolations reuses
+// its buffers (no allocation).
+class ObstacleProximity {
+ public:
+  // FAILED_PRECONDITION on a terrain.
+  static absl::StatusOr<ObstacleProximity> Create(const Map& map, double threshold);
+
+  int CountViolations(const Path& path);
+
+  // The map's rectangle in world coordinates.
+  Point2 lower() const { return lower_; }
+  Point2 upper() const { return upper_; }
+  int obstacle_count() const { return obstacle_count_; }
+
+ private:
+  ObstacleProximity() = default;
+  int CountOnWorld(const Path& path) const;
+  int CountOnGrid(const Path& path);
+
+  const ShapeWorld* world_ = nullptr;
+  const OccupancyGrid* grid_ = nullptr;
+  double threshold_ = 0.0;
+  Point2 lower_ = Point2::Zero();
+  Point2 upper_ = Point2::Zero();
+  int obstacle_count_ = 0;
+  // ShapeWorld: bounding boxes of the polygons.
+  std::vector<Point2> polygon_min_, polygon_max_;
+  // OccupancyGrid: per cell the violated component, or -1.
+  std::vector<int32_t> label_;
+  std::vector<uint32_t> seen_stamp_;
+  uint32_t stamp_ = 0;
+};
+
+}  // namespace swarmplan

@@ -1,0 +1,61 @@
+#include "core/operators/waypoint_params.h"
+
+namespace swarmplan {
+
+std::vector<ParamSpec> WaypointParams(int default_iterations, int default_waypoints) {
+  std::vector<ParamSpec> specs;
+  specs.push_back(ParamSpec::Int("iterations", default_iterations, 1, 1000000, "iterations",
+                                 "generations of the swarm (the problem's iteration cap lowers "
+                                 "it; the inertia and step schedules plan with the lower one)"));
+  specs.push_back(ParamSpec::Int("waypoints", default_waypoints, 1, 64, "",
+                                 "free waypoints between start and goal (decision vector "
+                                 "[x1..xk, y1..yk])")
+                      .Ours());
+  specs.push_back(ParamSpec::Enum("interpolation", "spline", InterpolationNames(),
+                                  "how waypoints are joined: not-a-knot cubic spline, straight "
+                                  "segments, or nearest-neighbour staircase (AEM-BSO Table 2)"));
+  specs.push_back(
+      ParamSpec::Int("samples", 100, 4, 100000, "", "points sampled along the spline").Ours());
+  specs.push_back(
+      ParamSpec::Double("penalty", 100.0, 0.0, 1e12, "", "M in the fitness L (1 + M xi)"));
+  specs.push_back(ParamSpec::Double("d_safe", 1.5, 0.0, 1e9, "map units",
+                                    "safety distance: xi counts the obstacles the path comes "
+                                    "closer to than max(d_safe, clearance)"));
+  return specs;
+}
+
+WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {
+  WaypointFitnessOptions options;
+  options.waypoints = static_cast<int>(params.Int("waypoints"));
+  options.interpolation = *ParseInterpolation(params.Enum("interpolation"));
+  options.samples = static_cast<int>(params.Int("samples"));
+  options.penalty = params.Double("penalty");
+  options.d_safe = params.Double("d_safe");
+  return options;
+}
+
+PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(
+    const WaypointFitnessOptions& options) {
+  return [options](const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
+    absl::StatusOr<std::unique_ptr<WaypointObjective>> objective =
+        WaypointObjective::Create(problem, options);
+    if (!objective.ok()) return objective.status();
+    return std::unique_ptr<PathObjective>(std::move(*objective));
+  };
+}
+
+double DoubleOr(const ParamSet& params, const std::string& name, double fallback) {
+  return params.values().count(name) ? params.Double(name) : fallback;
+}
+int64_t IntOr(const ParamSet& params, const std::string& name, int64_t fallback) {
+  return params.values().count(name) ? params.Int(name) : fallback;
+}
+bool BoolOr(const ParamSet& params, const std::string& name, bool fallback) {
+  return params.values().count(name) ? params.Bool(name) : fallback;
+}
+
+void AppendParams(std::vector<ParamSpec>& specs, const std::vector<ParamSpec>& more) {
+  specs.insert(specs.end(), more.begin(), more.end());
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,162 @@
+// The beetle antennae family (bas, lfs-bas, aco-bas, sio-bas, multi-bas) and the terrain aco.
+// On terrain the exact optimum of the paper's fitness is not available: the paths must beat a
+// feasible fly-over reference and stay within a stated factor of the straight distance (ACO
+// moves at most 2 cells per column in Y and Z, so its paths zig-zag: factor 2).
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "beetle_test_support.h"
+#include "gtest/gtest.h"
+
+namespace swarmplan {
+namespace {
+
+using ::swarmplan::beetle_testing::ExpectSamePath;
+using ::swarmplan::beetle_testing::ExpectValidPath;
+using ::swarmplan::beetle_testing::ExpectWellFormedLog;
+using ::swarmplan::beetle_testing::Length;
+using ::swarmplan::beetle_testing::RecordingObserver;
+using ::swarmplan::beetle_testing::SolveOrDie;
+
+// A 30 x 20 terrain: ground at 1 with a round hill 8 high in the middle, ceiling 20. Start and
+// goal on the first and last column at height 3.
+Problem HillProblem() {
+  std::vector<double> heights(30 * 20);
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 30; ++x) {
+      heights[y * 30 + x] =
+          1.0 + 8.0 * std::exp(-((x - 15.0) * (x - 15.0) + (y - 10.0) * (y - 10.0)) / 18.0);
+    }
+  }
+  Problem problem;
+  problem.map = std::make_shared<Map>(*Terrain::Create(30, 20, heights, 1.0, {0, 0}, 20.0));
+  problem.start = {0, 10, 3};
+  problem.goal = {29, 10, 3};
+  problem.clearance = 0.5;
+  problem.seed = 5;
+  return problem;
+}
+
+// Fitness of eq 3 for the path flying straight over the hill at height 10 (ground + clearance
+// at the top is 9.5): a feasible reference every planner must beat.
+double FlyOverFitness() {
+  double f = 0.0;
+  Point3 prev(0, 10, 3);
+  for (int x = 1; x <= 29; ++x) {
+    const Point3 p(x, 10, x == 29 ? 3.0 : 10.0);
+    f += (p - prev).norm() + p.z();
+    prev = p;
+  }
+  return f;
+}
+
+struct Case {
+  std::string id;
+  int64_t iterations;
+  int64_t population;  // 0: not a parameter of this planner
+  double factor;       // stated bound: length <= factor x the straight start-goal distance
+};
+
+class TerrainPlannerTest : public ::testing::TestWithParam<Case> {
+ protected:
+  ParamValues Params() const {
+    ParamValues params = {{"iterations", GetParam().iterations}};
+    if (GetParam().population > 0) params["population"] = GetParam().population;
+    return params;
+  }
+};
+
+TEST_P(TerrainPlannerTest, FindsALowCollisionFreePath) {
+  const Problem problem = HillProblem();
+  RecordingObserver observer;
+  const SearchResult result = SolveOrDie(GetParam().id, Params(), problem, observer);
+  ExpectValidPath(result, problem);
+  ExpectWellFormedLog(result, observer);
+  EXPECT_EQ(result.path.size(), 30u);  // one waypoint per column
+  for (size_t i = 0; i < result.path.size(); ++i) EXPECT_EQ(result.path[i].x(), i);
+  EXPECT_LT(result.fitness, FlyOverFitness());
+  EXPECT_LE(Length(result.path), GetParam().factor * (problem.goal - problem.start).norm());
+}
+
+TEST_P(TerrainPlannerTest, SameSeedGivesTheSamePath) {
+  const Problem problem = HillProblem();
+  RecordingObserver a, b;
+  const SearchResult first = SolveOrDie(GetParam().id, Params(), problem, a);
+  const SearchResult second = SolveOrDie(GetParam().id, Params(), problem, b);
+  ExpectSamePath(first, second);
+}
+
+TEST_P(TerrainPlannerTest, CancelFromTheObserverStopsWithinOneIteration) {
+  const Problem problem = HillProblem();
+  StopToken stop;
+  RecordingObserver observer(stop, 3);
+  const SearchResult result = SolveOrDie(GetParam().id, Params(), problem, observer, stop);
+  EXPECT_EQ(result.iterations, 4);
+  EXPECT_EQ(result.stop_reason, StopReason::kCancelled);
+  ExpectWellFormedLog(result, observer);
+}
+
+std::string CaseName(const ::testing::TestParamInfo<Case>& info) {
+  std::string name = info.param.id;
+  for (char& c : name) {
+    if (c == '-') c = '_';
+  }
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Planners, TerrainPlannerTest,
+                         ::testing::Values(Case{"bas", 300, 0, 1.6}, Case{"lfs-bas", 300, 0, 1.6},
+                                           Case{"aco-bas", 300, 0, 2.0},
+                                           Case{"sio-bas", 100, 5, 1.6},
+                                           Case{"multi-bas", 100, 5, 1.6}, Case{"aco", 30, 0, 2.0}),
+                         CaseName);
+
+TEST(TerrainPlannerTest, RejectsStartAndGoalInTheSameColumn) {
+  Problem problem = HillProblem();
+  problem.goal = {1, 5, 3};
+  absl::StatusOr<std::unique_ptr<Planner>> planner =
+      beetle_testing::BeetleRegistry().Create("bas", {});
+  ASSERT_TRUE(planner.ok());
+  NullObserver observer;
+  EXPECT_FALSE((*planner)->Solve(problem, StopToken(), observer).ok());
+}
+
+// The same planner ids on a 2D map: k = 2 waypoints and a spline.
+Problem CirclesProblem() {
+  Problem problem;
+  problem.map = std::make_shared<Map>(*ShapeWorld::Create(
+      {{0, 0}, {40, 40}}, {{{20, 20}, 4.0}, {{10, 30}, 2.0}, {{30, 10}, 2.0}}, {}));
+  problem.start = {2, 2, 0};
+  problem.goal = {38, 38, 0};
+  problem.seed = 3;
+  return problem;
+}
+
+TEST(BasOn2dMapsTest, FindsShortPaths) {
+  const Problem problem = CirclesProblem();
+  // The exact optimum around the middle circle (see bso_planners_test.cc).
+  const double d = 18.0 * std::sqrt(2.0), r = 4.0;
+  const double optimum =
+      2.0 * std::sqrt(d * d - r * r) + r * (std::numbers::pi - 2.0 * std::acos(r / d));
+  const std::vector<std::pair<std::string, ParamValues>> runs = {
+      {"bas", {{"iterations", int64_t{300}}}},
+      {"lfs-bas", {{"iterations", int64_t{300}}}},
+      {"bas", {{"iterations", int64_t{300}}, {"pso_mix", true}}},
+      {"sio-bas", {{"iterations", int64_t{150}}}},
+      {"multi-bas", {{"iterations", int64_t{150}}}},
+  };
+  for (const auto& [id, params] : runs) {
+    SCOPED_TRACE(id);
+    RecordingObserver observer;
+    const SearchResult result = SolveOrDie(id, params, problem, observer);
+    ExpectValidPath(result, problem);
+    ExpectWellFormedLog(result, observer);
+    EXPECT_LE(Length(result.path), 1.25 * optimum);  // stated bound
+  }
+}
+
+}  // namespace
+}  // namespace swarmplan
