@@ -1,0 +1,60 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swarmplan::bench {
+
+// One run of one planner on one problem: a row of the CSV. Optional fields are written empty.
+struct RunRecord {
+  std::string map;       // the map file's name
+  std::string scenario;  // index of the scenario in its .scen file, or the start and goal
+  std::string planner;
+  uint64_t seed = 0;
+  bool success = false;  // a path was found and it is collision-free
+  std::optional<double> length;
+  std::optional<double> optimal;  // known optimum (from the .scen file)
+  std::optional<double> ratio;    // length / optimal
+  std::optional<double> min_clearance;
+  std::optional<double> max_curvature;
+  int iterations = 0;
+  int64_t evaluations = 0;
+  double wall_seconds = 0.0;
+};
+
+// length / optimal for a successful run with a known optimum; 1 when both are zero (start ==
+// goal), nullopt otherwise.
+std::optional<double> LengthRatio(bool success, std::optional<double> length,
+                                  std::optional<double> optimal);
+
+// A number as the reports print it: up to 9 significant digits, "inf", "-inf" or "nan".
+std::string FormatNumber(double value);
+
+// One CSV field per RFC 4180: quoted when it holds a comma, quote, CR or LF (quotes doubled).
+std::string CsvField(const std::string& text);
+
+// The header line and one line per record, each ending in "\n".
+std::string CsvHeader();
+std::string CsvRow(const RunRecord& record);
+
+// The runs of one planner on one map.
+struct SummaryRow {
+  std::string planner;
+  std::string map;
+  int runs = 0;
+  int successes = 0;
+  std::optional<double> median_ratio;  // over successful runs with a known optimum
+  std::optional<double> worst_ratio;
+  std::optional<double> median_length;   // over successful runs
+  std::optional<double> median_seconds;  // over all runs
+};
+
+// One row per (planner, map) pair, in the order the pairs first appear in the records.
+std::vector<SummaryRow> Summarize(const std::vector<RunRecord>& records);
+
+// A Markdown table of the summary rows (an empty string when there are none).
+std::string MarkdownSummary(const std::vector<SummaryRow>& rows);
+
+}  // namespace swarmplan::bench
