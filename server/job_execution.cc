@@ -1,0 +1,114 @@
+// JobManager::Execute: what a worker does with one job.
+#include <spdlog/spdlog.h>
+
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "server/job_manager.h"
+#include "server/proto_convert.h"
+
+namespace swarmplan::server {
+namespace {
+
+// Publishes a job's iterations at the rate its request asked for. Never blocks on watchers.
+class ProgressPublisher final : public Observer {
+ public:
+  ProgressPublisher(Job& job, int every_iterations, absl::Duration min_interval)
+      : job_(job), every_(std::max(every_iterations, 1)), min_interval_(min_interval) {}
+
+  void OnIteration(const IterationStats& stats) override {
+    last_ = stats;
+    seen_ = true;
+    if (stats.iteration % every_ != 0 && stats.iteration != 0) return;
+    const absl::Time now = absl::Now();
+    if (published_ && now - last_publish_ < min_interval_) return;
+    Publish(stats, now);
+  }
+
+  // The last iteration is always reported.
+  void Flush() {
+    if (seen_ && (!published_ || last_published_iteration_ != last_.iteration)) {
+      Publish(last_, absl::Now());
+    }
+  }
+
+ private:
+  void Publish(const IterationStats& stats, absl::Time now) {
+    published_ = true;
+    last_publish_ = now;
+    last_published_iteration_ = stats.iteration;
+    v1::JobEvent event;
+    *event.mutable_progress() = ToProto(stats);
+    absl::MutexLock lock(&job_.mu);
+    *job_.record.mutable_progress() = event.progress();
+    job_.events.Publish(std::move(event));
+  }
+
+  Job& job_;
+  const int every_;
+  const absl::Duration min_interval_;
+  IterationStats last_;
+  bool seen_ = false;
+  bool published_ = false;
+  absl::Time last_publish_;
+  int last_published_iteration_ = -1;
+};
+
+v1::JobState FinalState(const PlanResult& result, CancelCause cause) {
+  if (cause != CancelCause::kNone || result.stop_reason == StopReason::kCancelled) {
+    return v1::JOB_STATE_CANCELLED;
+  }
+  if (result.found) return v1::JOB_STATE_SUCCEEDED;
+  if (result.stop_reason == StopReason::kDeadline) return v1::JOB_STATE_DEADLINE_EXCEEDED;
+  return v1::JOB_STATE_NO_PATH_FOUND;
+}
+
+}  // namespace
+
+void JobManager::Execute(const JobPtr& job) {
+  {
+    absl::MutexLock lock(&job->mu);
+    if (IsFinal(job->record.state())) return;
+    const absl::Time now = absl::Now();
+    job->record.set_state(v1::JOB_STATE_RUNNING);
+    job->record.clear_queue_position();
+    *job->record.mutable_started_at() = ToProto(now);
+    Persist(*job);
+    job->events.Publish([] {
+      v1::JobEvent started;
+      started.mutable_started();
+      return started;
+    }());
+    metrics_.JobStarted(absl::ToDoubleSeconds(now - job->queued_at));
+    spdlog::info("job {} running algorithm={} map={} queue_wait={:.3f}s", job->id,
+                 job->plan.algorithm, job->record.request().map_id(),
+                 absl::ToDoubleSeconds(now - job->queued_at));
+  }
+  UpdateGauges();
+
+  const v1::ProgressOptions& progress = job->record.request().progress();
+  ProgressPublisher publisher(*job, progress.every_iterations(),
+                              FromProto(progress.min_interval()));
+  absl::StatusOr<PlanResult> result = RunPlan(registry_, job->plan, job->stop, publisher);
+  publisher.Flush();
+
+  {
+    absl::MutexLock lock(&job->mu);
+    if (job->cancel_cause == CancelCause::kShutdown) {
+      // Not finished: recorded as queued so the next start runs it again.
+      job->record.set_state(v1::JOB_STATE_QUEUED);
+      job->record.clear_started_at();
+      job->record.clear_progress();
+      Persist(*job);
+      spdlog::info("job {} re-queued for the next start (shutdown) algorithm={} map={}", job->id,
+                   job->plan.algorithm, job->record.request().map_id());
+    } else if (!result.ok()) {
+      Finish(*job, v1::JOB_STATE_FAILED, nullptr, std::string(result.status().message()));
+    } else {
+      Finish(*job, FinalState(*result, job->cancel_cause), &*result, "");
+    }
+  }
+  UpdateGauges();
+  SweepExpired();
+}
+
+}  // namespace swarmplan::server

@@ -1,0 +1,409 @@
+#include "server/job_manager.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <thread>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+#include "absl/time/clock.h"
+#include "core/random.h"
+#include "server/ids.h"
+#include "server/proto_convert.h"
+
+namespace swarmplan::server {
+namespace {
+
+// Parameter names that size a population; capped by --max-population.
+bool IsPopulationParameter(const std::string& name) {
+  static constexpr const char* kNames[] = {
+      "population", "population_size", "swarm_size", "particles",  "num_particles",
+      "beetles",    "bacteria",        "fish",       "school_size"};
+  for (const char* n : kNames) {
+    if (name == n) return true;
+  }
+  return false;
+}
+
+absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& params,
+                         const ServerConfig& config) {
+  if (request.limits().max_iterations() < 0) {
+    return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
+  }
+  if (request.limits().max_iterations() > config.max_iterations) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("limits.max_iterations: ", request.limits().max_iterations(),
+                     " exceeds the server's limit of ", config.max_iterations));
+  }
+  const absl::Duration budget = FromProto(request.limits().time_budget());
+  if (budget < absl::ZeroDuration()) {
+    return absl::InvalidArgumentError("limits.time_budget: must not be negative");
+  }
+  if (budget > config.max_job_time) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("limits.time_budget: ", absl::FormatDuration(budget),
+                     " exceeds the server's limit of ", absl::FormatDuration(config.max_job_time)));
+  }
+  if (request.progress().every_iterations() < 0) {
+    return absl::InvalidArgumentError("progress.every_iterations: must be >= 0");
+  }
+  if (FromProto(request.progress().min_interval()) < absl::ZeroDuration()) {
+    return absl::InvalidArgumentError("progress.min_interval: must not be negative");
+  }
+  for (const auto& [name, value] : params) {
+    if (!IsPopulationParameter(name)) continue;
+    const int64_t* n = std::get_if<int64_t>(&value);
+    if (n != nullptr && *n > config.max_population) {
+      return absl::InvalidArgumentError(absl::StrCat("parameter '", name, "': ", *n,
+                                                     " exceeds the server's limit of ",
+                                                     config.max_population, " (--max-population)"));
+    }
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+JobManager::JobManager(const ServerConfig& config, const Registry& registry, MapCatalog& maps,
+                       Store& store, Metrics& metrics)
+    : config_(config), registry_(registry), maps_(maps), store_(store), metrics_(metrics) {
+  const int workers =
+      config.workers > 0 ? config.workers : std::max(1u, std::thread::hardware_concurrency());
+  queue_ = std::make_unique<JobQueue>(workers, config.queue_capacity,
+                                      [this](const JobPtr& job) { Execute(job); });
+  UpdateGauges();
+}
+
+JobManager::~JobManager() { queue_->Stop(); }
+
+void JobManager::UpdateGauges() {
+  metrics_.SetQueueDepth(queue_->depth());
+  metrics_.SetWorkers(queue_->busy(), queue_->workers());
+}
+
+absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, uint64_t seed,
+                                                std::string* map_name) const {
+  if (request.map_id().empty()) return absl::InvalidArgumentError("map_id: required");
+  if (request.algorithm().empty()) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("algorithm: required; one of: ", absl::StrJoin(registry_.Ids(), ", ")));
+  }
+  absl::StatusOr<std::shared_ptr<const CatalogEntry>> map = maps_.Get(request.map_id());
+  if (!map.ok()) {
+    return absl::Status(map.status().code(), absl::StrCat("map_id: ", map.status().message()));
+  }
+  absl::StatusOr<ParamValues> params = FromProto(request.parameters());
+  if (!params.ok()) return params.status();
+  if (absl::Status s = CheckLimits(request, *params, config_); !s.ok()) return s;
+
+  PlanRequest plan;
+  plan.algorithm = request.algorithm();
+  plan.params = std::move(*params);
+  plan.smoothing = request.smoothing().empty() ? "none" : request.smoothing();
+  plan.problem.map = (*map)->map;
+  plan.problem.start = FromProto(request.start());
+  plan.problem.goal = FromProto(request.goal());
+  plan.problem.clearance = request.clearance();
+  plan.problem.limits.max_iterations = request.limits().max_iterations() > 0
+                                           ? request.limits().max_iterations()
+                                           : config_.max_iterations;
+  const absl::Duration budget = FromProto(request.limits().time_budget());
+  plan.problem.limits.time_budget = budget > absl::ZeroDuration() ? budget : config_.max_job_time;
+  plan.problem.seed = seed;
+  if (absl::Status s = ValidatePlanRequest(registry_, plan); !s.ok()) return s;
+  *map_name = (*map)->info.name();
+  return plan;
+}
+
+void JobManager::Add(const JobPtr& job) {
+  absl::MutexLock lock(&mu_);
+  jobs_[job->id] = job;
+  order_.push_back(job->id);
+  absl::MutexLock job_lock(&job->mu);
+  if (!job->record.request().client_request_id().empty()) {
+    by_client_request_id_[job->record.request().client_request_id()] = job->id;
+  }
+}
+
+absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& request,
+                                                         bool detached) {
+  absl::MutexLock submit_lock(&submit_mu_);
+  if (!request.client_request_id().empty()) {
+    absl::MutexLock lock(&mu_);
+    if (auto it = by_client_request_id_.find(request.client_request_id());
+        it != by_client_request_id_.end()) {
+      return Submitted{jobs_.at(it->second), true};
+    }
+  }
+  const uint64_t seed = request.seed() != 0 ? request.seed() : PickSeed();
+  std::string map_name;
+  absl::StatusOr<PlanRequest> plan = Resolve(request, seed, &map_name);
+  if (!plan.ok()) return plan.status();
+
+  auto job = std::make_shared<Job>(NewId("job-"), detached);
+  job->plan = std::move(*plan);
+  job->map_name = map_name;
+  {
+    absl::MutexLock job_lock(&job->mu);
+    const absl::Time now = absl::Now();
+    job->queued_at = now;
+    job->record.set_id(job->id);
+    job->record.set_state(v1::JOB_STATE_QUEUED);
+    *job->record.mutable_request() = request;
+    job->record.mutable_request()->set_detached(detached);
+    job->record.set_seed(seed);
+    *job->record.mutable_created_at() = ToProto(now);
+    // Queue, record and announce under the job's lock: a worker cannot start it before.
+    absl::StatusOr<int> position = queue_->Push(job);
+    if (!position.ok()) return position.status();
+    job->record.set_queue_position(*position);
+    Persist(*job);
+    spdlog::info("job {} queued algorithm={} map={} seed={} position={}", job->id,
+                 job->plan.algorithm, request.map_id(), seed, *position);
+    v1::JobEvent accepted;
+    accepted.mutable_accepted()->set_queue_position(*position);
+    accepted.mutable_accepted()->set_seed(seed);
+    job->events.Publish(std::move(accepted));
+  }
+  Add(job);
+  UpdateGauges();
+  return Submitted{job, false};
+}
+
+void JobManager::Persist(Job& job) {
+  StoredJob stored;
+  stored.id = job.id;
+  stored.state = job.record.state();
+  job.record.SerializeToString(&stored.record);
+  stored.created_at = FromProto(job.record.created_at());
+  if (IsFinal(job.record.state())) stored.finished_at = FromProto(job.record.finished_at());
+  if (absl::Status s = store_.PutJob(stored); !s.ok()) {
+    spdlog::error("job {}: cannot record state {}: {}", job.id, StateLabel(job.record.state()),
+                  s.ToString());
+  }
+}
+
+absl::StatusOr<JobPtr> JobManager::Find(const std::string& id) const {
+  if (id.empty()) return absl::InvalidArgumentError("id: required");
+  absl::MutexLock lock(&mu_);
+  auto it = jobs_.find(id);
+  if (it == jobs_.end()) return absl::NotFoundError(absl::StrCat("job '", id, "' not found"));
+  return it->second;
+}
+
+v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
+  v1::Job out;
+  {
+    absl::MutexLock lock(&job.mu);
+    out = job.record;
+  }
+  if (out.state() == v1::JOB_STATE_QUEUED) {
+    const int position = queue_->Position(job.id);
+    if (position >= 0) out.set_queue_position(position);
+  } else {
+    out.clear_queue_position();
+  }
+  if (!with_result) out.clear_result();
+  return out;
+}
+
+std::vector<v1::Job> JobManager::List(const std::vector<v1::JobState>& states, int page_size,
+                                      const std::string& page_token,
+                                      std::string* next_page_token) const {
+  std::vector<JobPtr> candidates;
+  {
+    absl::MutexLock lock(&mu_);
+    auto it = order_.rbegin();
+    if (!page_token.empty()) {
+      it = std::find(order_.rbegin(), order_.rend(), page_token);
+      if (it != order_.rend()) ++it;
+    }
+    for (; it != order_.rend(); ++it) candidates.push_back(jobs_.at(*it));
+  }
+  std::vector<v1::Job> page;
+  next_page_token->clear();
+  for (const JobPtr& job : candidates) {
+    v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
+    if (!states.empty() &&
+        std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
+      continue;
+    }
+    if (static_cast<int>(page.size()) == page_size) {
+      *next_page_token = page.back().id();
+      break;
+    }
+    page.push_back(std::move(snapshot));
+  }
+  return page;
+}
+
+absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
+  absl::StatusOr<JobPtr> job = Find(id);
+  if (!job.ok()) return job.status();
+  {
+    absl::MutexLock lock(&(*job)->mu);
+    if (!IsFinal((*job)->record.state())) {
+      (*job)->cancel_cause = CancelCause::kClient;
+      if (queue_->Remove(id)) {
+        Finish(**job, v1::JOB_STATE_CANCELLED, nullptr, "cancelled before it started");
+      } else {
+        (*job)->stop.Cancel();
+      }
+    }
+  }
+  UpdateGauges();
+  return Snapshot(**job, /*with_result=*/true);
+}
+
+void JobManager::WatcherLeft(const JobPtr& job, bool owner, int remaining) {
+  bool cancel = false;
+  {
+    absl::MutexLock lock(&job->mu);
+    if (owner) job->owner_gone = true;
+    cancel = !job->detached && job->owner_gone && remaining == 0 && !IsFinal(job->record.state()) &&
+             !shutting_down_.load();
+  }
+  if (cancel) {
+    spdlog::info("job {}: its Plan caller went away; cancelling", job->id);
+    (void)Cancel(job->id);
+  }
+}
+
+void JobManager::Finish(Job& job, v1::JobState state, const PlanResult* result,
+                        const std::string& reason) {
+  const absl::Time now = absl::Now();
+  job.record.set_state(state);
+  *job.record.mutable_finished_at() = ToProto(now);
+  job.record.clear_queue_position();
+  if (result != nullptr) *job.record.mutable_result() = ToProto(*result);
+  job.record.set_failure_reason(reason);
+  Persist(job);
+
+  v1::JobEvent finished;
+  finished.mutable_finished()->set_state(state);
+  if (result != nullptr) *finished.mutable_finished()->mutable_result() = job.record.result();
+  finished.mutable_finished()->set_failure_reason(reason);
+  job.events.Publish(std::move(finished));
+
+  const absl::Time started = job.record.has_started_at() ? FromProto(job.record.started_at()) : now;
+  const double seconds = absl::ToDoubleSeconds(now - started);
+  metrics_.JobFinished(job.plan.algorithm, StateLabel(state), seconds,
+                       result != nullptr ? result->evaluations : 0);
+  spdlog::info("job {} {} algorithm={} map={} duration={:.3f}s{}{}", job.id, StateLabel(state),
+               job.plan.algorithm, job.record.request().map_id(), seconds,
+               reason.empty() ? "" : " reason=", reason);
+}
+
+void JobManager::SweepExpired() {
+  const absl::Time now = absl::Now();
+  const absl::Time cutoff = now - config_.job_retention;
+  std::vector<JobPtr> all;
+  {
+    absl::MutexLock lock(&mu_);
+    if (now - last_sweep_ < absl::Minutes(1)) return;
+    last_sweep_ = now;
+    for (const auto& [id, job] : jobs_) all.push_back(job);
+  }
+  std::vector<std::string> expired;
+  for (const JobPtr& job : all) {
+    absl::MutexLock lock(&job->mu);
+    if (IsFinal(job->record.state()) && FromProto(job->record.finished_at()) < cutoff) {
+      expired.push_back(job->id);
+    }
+  }
+  if (absl::StatusOr<int> n = store_.DeleteJobsFinishedBefore(cutoff); !n.ok()) {
+    spdlog::warn("cannot delete expired jobs: {}", n.status().ToString());
+  }
+  absl::MutexLock lock(&mu_);
+  for (const std::string& id : expired) {
+    jobs_.erase(id);
+    order_.erase(std::remove(order_.begin(), order_.end(), id), order_.end());
+  }
+  for (auto it = by_client_request_id_.begin(); it != by_client_request_id_.end();) {
+    it = jobs_.count(it->second) ? std::next(it) : by_client_request_id_.erase(it);
+  }
+}
+
+absl::Status JobManager::Recover() {
+  absl::StatusOr<std::vector<StoredJob>> stored = store_.LoadJobs();
+  if (!stored.ok()) return stored.status();
+  const absl::Time cutoff = absl::Now() - config_.job_retention;
+  int requeued = 0;
+  for (const StoredJob& s : *stored) {
+    if (s.finished_at != absl::InfiniteFuture() && s.finished_at < cutoff) continue;
+    v1::Job record;
+    if (!record.ParseFromString(s.record)) {
+      spdlog::warn("job {}: stored record is corrupt; skipped", s.id);
+      continue;
+    }
+    auto job = std::make_shared<Job>(s.id, record.request().detached());
+    std::string map_name;
+    absl::StatusOr<PlanRequest> plan = Resolve(record.request(), record.seed(), &map_name);
+    if (plan.ok()) {
+      job->plan = std::move(*plan);
+      job->map_name = map_name;
+    } else {
+      job->plan.algorithm = record.request().algorithm();
+    }
+    {
+      absl::MutexLock lock(&job->mu);
+      job->record = std::move(record);
+      // Nobody watches a recovered job's Plan call any more.
+      job->owner_gone = true;
+      if (IsFinal(job->record.state())) {
+        v1::JobEvent finished;
+        finished.mutable_finished()->set_state(job->record.state());
+        if (job->record.has_result()) {
+          *finished.mutable_finished()->mutable_result() = job->record.result();
+        }
+        finished.mutable_finished()->set_failure_reason(job->record.failure_reason());
+        job->events.Publish(std::move(finished));
+      } else if (!plan.ok()) {
+        Finish(*job, v1::JOB_STATE_FAILED, nullptr,
+               absl::StrCat("cannot run again after a restart: ", plan.status().message()));
+      } else {
+        job->record.set_state(v1::JOB_STATE_QUEUED);
+        job->record.clear_started_at();
+        job->record.clear_progress();
+        job->queued_at = absl::Now();
+        absl::StatusOr<int> position = queue_->Push(job, /*ignore_capacity=*/true);
+        if (!position.ok()) return position.status();
+        Persist(*job);
+        v1::JobEvent accepted;
+        accepted.mutable_accepted()->set_queue_position(*position);
+        accepted.mutable_accepted()->set_seed(job->record.seed());
+        job->events.Publish(std::move(accepted));
+        ++requeued;
+      }
+    }
+    Add(job);
+  }
+  if (requeued > 0) spdlog::info("recovered {} unfinished jobs; queued again", requeued);
+  UpdateGauges();
+  return absl::OkStatus();
+}
+
+void JobManager::Shutdown(absl::Duration grace) {
+  shutting_down_.store(true);
+  queue_->StopAccepting();
+  if (!queue_->WaitIdle(grace)) {
+    std::vector<JobPtr> all;
+    {
+      absl::MutexLock lock(&mu_);
+      for (const auto& [id, job] : jobs_) all.push_back(job);
+    }
+    for (const JobPtr& job : all) {
+      absl::MutexLock lock(&job->mu);
+      if (job->record.state() == v1::JOB_STATE_RUNNING) {
+        job->cancel_cause = CancelCause::kShutdown;
+        job->stop.Cancel();
+      }
+    }
+    queue_->WaitIdle(absl::InfiniteDuration());
+  }
+  queue_->Stop();
+}
+
+}  // namespace swarmplan::server

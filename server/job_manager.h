@@ -1,0 +1,93 @@
+#pragma once
+
+#include <atomic>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "absl/base/thread_annotations.h"
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "core/registry.h"
+#include "server/config.h"
+#include "server/job.h"
+#include "server/job_queue.h"
+#include "server/map_catalog.h"
+#include "server/metrics.h"
+#include "server/store.h"
+
+namespace swarmplan::server {
+
+// Owns every job: validates and queues requests, runs them on the worker pool, records every
+// state change in the store, publishes events, cancels, recovers after a restart and drains on
+// shutdown. The gRPC services are thin adapters over it. Thread-safe.
+class JobManager {
+ public:
+  JobManager(const ServerConfig& config, const Registry& registry, MapCatalog& maps, Store& store,
+             Metrics& metrics);
+  ~JobManager();
+
+  // Loads the stored jobs: finished ones within the retention period are kept, queued and
+  // running ones are queued again with their recorded seed.
+  absl::Status Recover();
+
+  struct Submitted {
+    JobPtr job;
+    bool deduplicated = false;
+  };
+  // Validates and queues. Errors: INVALID_ARGUMENT, NOT_FOUND, FAILED_PRECONDITION,
+  // RESOURCE_EXHAUSTED (queue full), UNAVAILABLE (shutting down).
+  absl::StatusOr<Submitted> Submit(const v1::PlanRequest& request, bool detached);
+
+  absl::StatusOr<JobPtr> Find(const std::string& id) const;
+  // The job as clients see it, with its live queue position.
+  v1::Job Snapshot(Job& job, bool with_result) const;
+  // Newest first; `page_token` is the id after which to continue.
+  std::vector<v1::Job> List(const std::vector<v1::JobState>& states, int page_size,
+                            const std::string& page_token, std::string* next_page_token) const;
+  absl::StatusOr<v1::Job> Cancel(const std::string& id);
+
+  // A stream on `job` ended; `remaining` watchers are left. When the job's own Plan call ended
+  // (`owner`) before the job finished, nobody watches and the job is not detached, it is
+  // cancelled.
+  void WatcherLeft(const JobPtr& job, bool owner, int remaining);
+
+  // Refuses new jobs, lets running jobs finish within `grace`, then stops the rest and records
+  // them as queued so the next start runs them again.
+  void Shutdown(absl::Duration grace);
+
+  int queue_depth() const { return queue_->depth(); }
+  int busy_workers() const { return queue_->busy(); }
+
+ private:
+  absl::StatusOr<PlanRequest> Resolve(const v1::PlanRequest& request, uint64_t seed,
+                                      std::string* map_name) const;
+  void Execute(const JobPtr& job);  // job_execution.cc
+  // Sets the final state, records and publishes it.
+  void Finish(Job& job, v1::JobState state, const PlanResult* result, const std::string& reason)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
+  void Persist(Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
+  void Add(const JobPtr& job);
+  void SweepExpired();
+  void UpdateGauges();
+
+  const ServerConfig config_;
+  const Registry& registry_;
+  MapCatalog& maps_;
+  Store& store_;
+  Metrics& metrics_;
+
+  mutable absl::Mutex mu_;
+  std::map<std::string, JobPtr> jobs_ ABSL_GUARDED_BY(mu_);
+  std::vector<std::string> order_ ABSL_GUARDED_BY(mu_);  // creation order
+  std::map<std::string, std::string> by_client_request_id_ ABSL_GUARDED_BY(mu_);
+  absl::Time last_sweep_ ABSL_GUARDED_BY(mu_) = absl::InfinitePast();
+  absl::Mutex submit_mu_;  // makes client_request_id dedupe atomic
+  // Set by Shutdown: streams cut by the shutdown do not cancel their jobs, which stay queued.
+  std::atomic<bool> shutting_down_{false};
+
+  std::unique_ptr<JobQueue> queue_;  // last: its workers stop before the rest is destroyed
+};
+
+}  // namespace swarmplan::server

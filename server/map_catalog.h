@@ -1,0 +1,60 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "absl/base/thread_annotations.h"
+#include "absl/status/statusor.h"
+#include "absl/synchronization/mutex.h"
+#include "core/map/io/map_io.h"
+#include "core/map/map.h"
+#include "server/store.h"
+#include "swarmplan/v1/maps.pb.h"
+
+namespace swarmplan::server {
+
+// A parsed map ready for planning, with its description.
+struct CatalogEntry {
+  v1::MapInfo info;
+  MapPtr map;
+};
+
+// The maps the server holds: parsed in memory, stored durably in the Store. Thread-safe.
+class MapCatalog {
+ public:
+  MapCatalog(Store& store, LoadOptions load_options)
+      : store_(store), load_options_(std::move(load_options)) {}
+
+  // Parses every stored map. A stored map that no longer parses is skipped and reported in
+  // the returned list of warnings.
+  absl::StatusOr<std::vector<std::string>> Load();
+
+  struct UploadResult {
+    v1::MapInfo info;
+    bool created = false;
+  };
+  // Parses, stores, then adds the map. Identical content under the same name returns the
+  // stored map.
+  absl::StatusOr<UploadResult> Upload(const std::string& name, const v1::MapSource& source);
+
+  // NOT_FOUND naming the id.
+  absl::StatusOr<std::shared_ptr<const CatalogEntry>> Get(const std::string& id) const;
+  absl::StatusOr<v1::MapSource> GetSource(const std::string& id) const;
+  // Oldest first; `page_token` is the id after which to continue.
+  std::vector<v1::MapInfo> List(int page_size, const std::string& page_token,
+                                std::string* next_page_token) const;
+  absl::Status Delete(const std::string& id);
+  int size() const;
+
+ private:
+  Store& store_;
+  const LoadOptions load_options_;
+  mutable absl::Mutex mu_;
+  // Upload order; ids are unique.
+  std::vector<std::shared_ptr<const CatalogEntry>> entries_ ABSL_GUARDED_BY(mu_);
+  absl::Mutex upload_mu_;  // serialises uploads so identical concurrent uploads dedupe
+};
+
+}  // namespace swarmplan::server

@@ -1,0 +1,71 @@
+#include "absl/status/status.h"
+#include "server/grpc_status.h"
+#include "server/services.h"
+
+namespace swarmplan::server {
+
+absl::StatusOr<int> ResolvePageSize(int page_size) {
+  if (page_size < 0) return absl::InvalidArgumentError("page_size: must be >= 0");
+  if (page_size == 0) return 100;
+  return std::min(page_size, 1000);
+}
+
+grpc::ServerUnaryReactor* FinishUnary(grpc::CallbackServerContext* context,
+                                      const grpc::Status& status) {
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  reactor->Finish(status);
+  return reactor;
+}
+
+grpc::ServerUnaryReactor* MapServiceImpl::UploadMap(grpc::CallbackServerContext* context,
+                                                    const v1::UploadMapRequest* request,
+                                                    v1::UploadMapResponse* response) {
+  if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
+  absl::StatusOr<MapCatalog::UploadResult> result =
+      maps_.Upload(request->name(), request->source());
+  if (!result.ok()) return FinishUnary(context, ToGrpcStatus(result.status()));
+  *response->mutable_map() = result->info;
+  response->set_created(result->created);
+  metrics_.SetMapsStored(maps_.size());
+  return FinishUnary(context, grpc::Status::OK);
+}
+
+grpc::ServerUnaryReactor* MapServiceImpl::GetMap(grpc::CallbackServerContext* context,
+                                                 const v1::GetMapRequest* request,
+                                                 v1::GetMapResponse* response) {
+  if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
+  absl::StatusOr<std::shared_ptr<const CatalogEntry>> entry = maps_.Get(request->id());
+  if (!entry.ok()) return FinishUnary(context, ToGrpcStatus(entry.status()));
+  *response->mutable_map() = (*entry)->info;
+  if (request->include_source()) {
+    absl::StatusOr<v1::MapSource> source = maps_.GetSource(request->id());
+    if (!source.ok()) return FinishUnary(context, ToGrpcStatus(source.status()));
+    *response->mutable_source() = std::move(*source);
+  }
+  return FinishUnary(context, grpc::Status::OK);
+}
+
+grpc::ServerUnaryReactor* MapServiceImpl::ListMaps(grpc::CallbackServerContext* context,
+                                                   const v1::ListMapsRequest* request,
+                                                   v1::ListMapsResponse* response) {
+  if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
+  absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
+  if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
+  std::string next;
+  for (v1::MapInfo& info : maps_.List(*page_size, request->page_token(), &next)) {
+    *response->add_maps() = std::move(info);
+  }
+  response->set_next_page_token(next);
+  return FinishUnary(context, grpc::Status::OK);
+}
+
+grpc::ServerUnaryReactor* MapServiceImpl::DeleteMap(grpc::CallbackServerContext* context,
+                                                    const v1::DeleteMapRequest* request,
+                                                    v1::DeleteMapResponse*) {
+  if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
+  absl::Status status = maps_.Delete(request->id());
+  metrics_.SetMapsStored(maps_.size());
+  return FinishUnary(context, ToGrpcStatus(status));
+}
+
+}  // namespace swarmplan::server

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "absl/status/status.h"
+
+namespace swarmplan::server {
+
+// The server's Prometheus metrics (prometheus-cpp behind a narrow interface). Thread-safe.
+//
+//   swarmplan_jobs_total{algorithm,state}            jobs finished, by final state
+//   swarmplan_job_duration_seconds{algorithm}        planning time of finished jobs
+//   swarmplan_job_queue_wait_seconds                 time from queued to started
+//   swarmplan_job_queue_depth                        jobs waiting
+//   swarmplan_workers_busy / swarmplan_workers       workers planning / in the pool
+//   swarmplan_fitness_evaluations_total{algorithm}   fitness evaluations of finished jobs
+//   swarmplan_rpc_requests_total{method,code}        RPCs handled
+//   swarmplan_rpc_duration_seconds{method,code}      RPC latency (streams: until the end)
+//   swarmplan_maps_stored                            maps held
+//   swarmplan_build_info{version}                    1
+class Metrics {
+ public:
+  Metrics();
+  ~Metrics();
+
+  void JobFinished(const std::string& algorithm, const std::string& state, double seconds,
+                   int64_t evaluations);
+  void JobStarted(double queue_wait_seconds);
+  void SetQueueDepth(int depth);
+  void SetWorkers(int busy, int total);
+  void SetMapsStored(int maps);
+  void RpcHandled(const std::string& method, const std::string& code, double seconds);
+
+  // Serves GET /metrics on address:port (port 0: any free port). FAILED_PRECONDITION naming
+  // the port when it cannot bind.
+  absl::Status Serve(const std::string& address, int port);
+  // The port /metrics is served on, 0 when not serving.
+  int port() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace swarmplan::server

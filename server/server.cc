@@ -1,0 +1,165 @@
+#include "server/server.h"
+
+#include <grpcpp/ext/proto_server_reflection_plugin.h>
+#include <grpcpp/grpcpp.h>
+#include <grpcpp/health_check_service_interface.h>
+#include <spdlog/spdlog.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+#include "absl/synchronization/mutex.h"
+#include "server/auth.h"
+#include "server/job_manager.h"
+#include "server/map_catalog.h"
+#include "server/metrics.h"
+#include "server/rpc_metrics.h"
+#include "server/services.h"
+#include "server/sqlite_store.h"
+
+namespace swarmplan::server {
+namespace {
+
+absl::StatusOr<std::string> ReadFile(const std::string& flag, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return absl::FailedPreconditionError(absl::StrCat("--", flag, " ", path, ": cannot read"));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> Credentials(const ServerConfig& config) {
+  if (config.tls_cert_file.empty()) return grpc::InsecureServerCredentials();
+  absl::StatusOr<std::string> cert = ReadFile("tls-cert-file", config.tls_cert_file);
+  if (!cert.ok()) return cert.status();
+  absl::StatusOr<std::string> key = ReadFile("tls-key-file", config.tls_key_file);
+  if (!key.ok()) return key.status();
+  grpc::SslServerCredentialsOptions options;
+  options.pem_key_cert_pairs.push_back({*key, *cert});
+  return grpc::SslServerCredentials(options);
+}
+
+}  // namespace
+
+struct Server::Impl {
+  ServerConfig config;
+  const Registry* registry = nullptr;
+  std::unique_ptr<SqliteStore> store;
+  Metrics metrics;
+  std::unique_ptr<MapCatalog> maps;
+  std::unique_ptr<JobManager> jobs;
+  Authenticator auth;
+  std::unique_ptr<MapServiceImpl> map_service;
+  std::unique_ptr<AlgorithmServiceImpl> algorithm_service;
+  std::unique_ptr<JobServiceImpl> job_service;
+  std::unique_ptr<grpc::Server> grpc_server;
+  int port = 0;
+
+  absl::Mutex mu;
+  bool shutdown_started ABSL_GUARDED_BY(mu) = false;
+  bool shutdown_done ABSL_GUARDED_BY(mu) = false;
+};
+
+Server::Server(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Server::~Server() { Shutdown(); }
+
+absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config,
+                                                      const Registry& registry) {
+  auto impl = std::make_unique<Impl>();
+  impl->config = config;
+  impl->registry = &registry;
+
+  absl::StatusOr<Authenticator> auth = Authenticator::FromFile(config.token_file);
+  if (!auth.ok()) return auth.status();
+  impl->auth = *auth;
+  absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> credentials = Credentials(config);
+  if (!credentials.ok()) return credentials.status();
+
+  absl::StatusOr<std::unique_ptr<SqliteStore>> store = SqliteStore::Open(config.data_dir);
+  if (!store.ok()) return store.status();
+  impl->store = std::move(*store);
+
+  LoadOptions load_options;
+  load_options.limits.max_cells = config.max_map_cells;
+  load_options.limits.max_file_bytes = config.max_message_bytes;
+  impl->maps = std::make_unique<MapCatalog>(*impl->store, load_options);
+  absl::StatusOr<std::vector<std::string>> warnings = impl->maps->Load();
+  if (!warnings.ok()) return warnings.status();
+  for (const std::string& w : *warnings) spdlog::warn("{}", w);
+  impl->metrics.SetMapsStored(impl->maps->size());
+
+  if (config.metrics_port != 0) {
+    if (absl::Status s = impl->metrics.Serve(config.metrics_address,
+                                             config.metrics_port < 0 ? 0 : config.metrics_port);
+        !s.ok()) {
+      return s;
+    }
+  }
+
+  impl->jobs = std::make_unique<JobManager>(impl->config, registry, *impl->maps, *impl->store,
+                                            impl->metrics);
+  if (absl::Status s = impl->jobs->Recover(); !s.ok()) return s;
+
+  impl->map_service = std::make_unique<MapServiceImpl>(*impl->maps, impl->metrics, impl->auth);
+  impl->algorithm_service = std::make_unique<AlgorithmServiceImpl>(registry, impl->auth);
+  impl->job_service = std::make_unique<JobServiceImpl>(*impl->jobs, impl->config, impl->auth);
+
+  grpc::EnableDefaultHealthCheckService(true);
+  grpc::reflection::InitProtoReflectionServerBuilderPlugin();
+  grpc::ServerBuilder builder;
+  builder.AddListeningPort(config.listen, *credentials, &impl->port);
+  builder.SetMaxReceiveMessageSize(config.max_message_bytes);
+  builder.SetMaxSendMessageSize(config.max_message_bytes);
+  builder.RegisterService(impl->map_service.get());
+  builder.RegisterService(impl->algorithm_service.get());
+  builder.RegisterService(impl->job_service.get());
+  std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> interceptors;
+  interceptors.push_back(std::make_unique<RpcMetricsInterceptorFactory>(impl->metrics));
+  builder.experimental().SetInterceptorCreators(std::move(interceptors));
+  impl->grpc_server = builder.BuildAndStart();
+  if (impl->grpc_server == nullptr || impl->port == 0) {
+    impl->jobs->Shutdown(absl::ZeroDuration());
+    return absl::UnavailableError(absl::StrCat(
+        "--listen ", config.listen, ": cannot listen there (address in use or invalid)"));
+  }
+  spdlog::info("swarmplan-server listening on port {} (metrics: {}, data: {}, auth: {}, tls: {})",
+               impl->port,
+               impl->metrics.port() > 0 ? absl::StrCat(impl->metrics.port()) : std::string("off"),
+               config.data_dir, impl->auth.enabled() ? "on" : "off",
+               config.tls_cert_file.empty() ? "off" : "on");
+  return std::unique_ptr<Server>(new Server(std::move(impl)));
+}
+
+int Server::port() const { return impl_->port; }
+int Server::metrics_port() const { return impl_->metrics.port(); }
+
+void Server::Shutdown() {
+  {
+    absl::MutexLock lock(&impl_->mu);
+    if (impl_->shutdown_started) return;
+    impl_->shutdown_started = true;
+  }
+  spdlog::info("shutting down: no new jobs; running jobs get {}",
+               absl::FormatDuration(impl_->config.shutdown_grace));
+  if (grpc::HealthCheckServiceInterface* health = impl_->grpc_server->GetHealthCheckService()) {
+    health->SetServingStatus(false);
+  }
+  impl_->jobs->Shutdown(impl_->config.shutdown_grace);
+  // Streams of jobs that did not finish are cut now; their jobs stay queued in the store.
+  impl_->grpc_server->Shutdown(std::chrono::system_clock::now() + std::chrono::seconds(1));
+  impl_->grpc_server->Wait();
+  spdlog::info("shut down");
+  absl::MutexLock lock(&impl_->mu);
+  impl_->shutdown_done = true;
+}
+
+void Server::Wait() {
+  absl::MutexLock lock(&impl_->mu);
+  impl_->mu.Await(absl::Condition(&impl_->shutdown_done));
+}
+
+}  // namespace swarmplan::server

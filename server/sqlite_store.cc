@@ -1,0 +1,215 @@
+#include "server/sqlite_store.h"
+
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <system_error>
+
+#include "absl/strings/str_cat.h"
+
+namespace swarmplan::server {
+namespace {
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE IF NOT EXISTS maps (
+  id TEXT PRIMARY KEY,
+  name TEXT NOT NULL,
+  format TEXT NOT NULL,
+  content_hash TEXT NOT NULL,
+  source BLOB NOT NULL,
+  created_us INTEGER NOT NULL
+);
+CREATE TABLE IF NOT EXISTS jobs (
+  id TEXT PRIMARY KEY,
+  state INTEGER NOT NULL,
+  record BLOB NOT NULL,
+  created_us INTEGER NOT NULL,
+  finished_us INTEGER
+);
+CREATE INDEX IF NOT EXISTS jobs_finished ON jobs(finished_us);
+)sql";
+
+// A prepared statement, finalized when it goes out of scope.
+class Statement {
+ public:
+  Statement(sqlite3* db, const char* sql) : db_(db) {
+    rc_ = sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr);
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  absl::Status status() const { return rc_ == SQLITE_OK ? absl::OkStatus() : Error("prepare"); }
+  void Bind(int i, const std::string& text) {
+    sqlite3_bind_blob(stmt_, i, text.data(), static_cast<int>(text.size()), SQLITE_TRANSIENT);
+  }
+  void BindText(int i, const std::string& text) {
+    sqlite3_bind_text(stmt_, i, text.data(), static_cast<int>(text.size()), SQLITE_TRANSIENT);
+  }
+  void Bind(int i, int64_t v) { sqlite3_bind_int64(stmt_, i, v); }
+  void BindNull(int i) { sqlite3_bind_null(stmt_, i); }
+  // SQLITE_ROW, SQLITE_DONE or an error code.
+  int Step() { return sqlite3_step(stmt_); }
+  std::string Text(int col) const {
+    const void* p = sqlite3_column_blob(stmt_, col);
+    const int n = sqlite3_column_bytes(stmt_, col);
+    return p == nullptr ? std::string() : std::string(static_cast<const char*>(p), n);
+  }
+  int64_t Int(int col) const { return sqlite3_column_int64(stmt_, col); }
+  bool IsNull(int col) const { return sqlite3_column_type(stmt_, col) == SQLITE_NULL; }
+  absl::Status Error(const char* what) const {
+    return absl::InternalError(absl::StrCat("sqlite ", what, ": ", sqlite3_errmsg(db_)));
+  }
+  absl::Status Done() { return Step() == SQLITE_DONE ? absl::OkStatus() : Error("step"); }
+
+ private:
+  sqlite3* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+  int rc_ = SQLITE_OK;
+};
+
+int64_t ToMicros(absl::Time t) { return absl::ToUnixMicros(t); }
+absl::Time FromMicros(int64_t us) { return absl::FromUnixMicros(us); }
+
+StoredMap ReadMap(const Statement& s) {
+  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), s.Text(4), FromMicros(s.Int(5))};
+}
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<SqliteStore>> SqliteStore::Open(const std::string& data_dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(data_dir, ec);
+  if (ec) {
+    return absl::FailedPreconditionError(
+        absl::StrCat("--data-dir ", data_dir, ": cannot create: ", ec.message()));
+  }
+  const std::string path = (std::filesystem::path(data_dir) / "swarmplan.db").string();
+  sqlite3* db = nullptr;
+  if (sqlite3_open_v2(path.c_str(), &db,
+                      SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX,
+                      nullptr) != SQLITE_OK) {
+    absl::Status s = absl::FailedPreconditionError(
+        absl::StrCat("--data-dir ", data_dir, ": cannot open ", path, ": ", sqlite3_errmsg(db)));
+    sqlite3_close(db);
+    return s;
+  }
+  sqlite3_busy_timeout(db, 5000);
+  std::unique_ptr<SqliteStore> store(new SqliteStore(db));
+  absl::MutexLock lock(&store->mu_);
+  for (const char* sql : {"PRAGMA journal_mode=WAL;", "PRAGMA synchronous=FULL;", kSchema}) {
+    if (absl::Status s = store->Exec(sql); !s.ok()) return s;
+  }
+  return store;
+}
+
+SqliteStore::~SqliteStore() {
+  absl::MutexLock lock(&mu_);
+  sqlite3_close(db_);
+}
+
+absl::Status SqliteStore::Exec(const char* sql) {
+  char* error = nullptr;
+  if (sqlite3_exec(db_, sql, nullptr, nullptr, &error) != SQLITE_OK) {
+    absl::Status s = absl::InternalError(absl::StrCat("sqlite: ", error ? error : "error"));
+    sqlite3_free(error);
+    return s;
+  }
+  return absl::OkStatus();
+}
+
+absl::Status SqliteStore::PutMap(const StoredMap& map) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_,
+              "INSERT OR REPLACE INTO maps(id, name, format, content_hash, source, created_us) "
+              "VALUES (?, ?, ?, ?, ?, ?)");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, map.id);
+  s.BindText(2, map.name);
+  s.BindText(3, map.format);
+  s.BindText(4, map.content_hash);
+  s.Bind(5, map.source);
+  s.Bind(6, ToMicros(map.created_at));
+  return s.Done();
+}
+
+absl::StatusOr<StoredMap> SqliteStore::GetMap(const std::string& id) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_,
+              "SELECT id, name, format, content_hash, source, created_us FROM maps WHERE id = ?");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, id);
+  const int rc = s.Step();
+  if (rc == SQLITE_ROW) return ReadMap(s);
+  if (rc == SQLITE_DONE) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return s.Error("step");
+}
+
+absl::StatusOr<std::vector<StoredMap>> SqliteStore::LoadMaps() {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_,
+              "SELECT id, name, format, content_hash, source, created_us FROM maps "
+              "ORDER BY created_us, id");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  std::vector<StoredMap> maps;
+  int rc;
+  while ((rc = s.Step()) == SQLITE_ROW) maps.push_back(ReadMap(s));
+  if (rc != SQLITE_DONE) return s.Error("step");
+  return maps;
+}
+
+absl::Status SqliteStore::DeleteMap(const std::string& id) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, "DELETE FROM maps WHERE id = ?");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, id);
+  if (absl::Status st = s.Done(); !st.ok()) return st;
+  if (sqlite3_changes(db_) == 0)
+    return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return absl::OkStatus();
+}
+
+absl::Status SqliteStore::PutJob(const StoredJob& job) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_,
+              "INSERT OR REPLACE INTO jobs(id, state, record, created_us, finished_us) "
+              "VALUES (?, ?, ?, ?, ?)");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, job.id);
+  s.Bind(2, static_cast<int64_t>(job.state));
+  s.Bind(3, job.record);
+  s.Bind(4, ToMicros(job.created_at));
+  if (job.finished_at == absl::InfiniteFuture()) {
+    s.BindNull(5);
+  } else {
+    s.Bind(5, ToMicros(job.finished_at));
+  }
+  return s.Done();
+}
+
+absl::StatusOr<std::vector<StoredJob>> SqliteStore::LoadJobs() {
+  absl::MutexLock lock(&mu_);
+  Statement s(
+      db_, "SELECT id, state, record, created_us, finished_us FROM jobs ORDER BY created_us, id");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  std::vector<StoredJob> jobs;
+  int rc;
+  while ((rc = s.Step()) == SQLITE_ROW) {
+    StoredJob job{s.Text(0), static_cast<int>(s.Int(1)), s.Text(2), FromMicros(s.Int(3))};
+    if (!s.IsNull(4)) job.finished_at = FromMicros(s.Int(4));
+    jobs.push_back(std::move(job));
+  }
+  if (rc != SQLITE_DONE) return s.Error("step");
+  return jobs;
+}
+
+absl::StatusOr<int> SqliteStore::DeleteJobsFinishedBefore(absl::Time cutoff) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, "DELETE FROM jobs WHERE finished_us IS NOT NULL AND finished_us < ?");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.Bind(1, ToMicros(cutoff));
+  if (absl::Status st = s.Done(); !st.ok()) return st;
+  return sqlite3_changes(db_);
+}
+
+}  // namespace swarmplan::server

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "absl/base/thread_annotations.h"
+#include "absl/synchronization/mutex.h"
+#include "server/store.h"
+
+struct sqlite3;
+
+namespace swarmplan::server {
+
+// The embedded store: one SQLite database (WAL mode, synchronous=FULL) in a data directory.
+class SqliteStore final : public Store {
+ public:
+  // Creates the directory and the schema when needed.
+  static absl::StatusOr<std::unique_ptr<SqliteStore>> Open(const std::string& data_dir);
+  ~SqliteStore() override;
+
+  absl::Status PutMap(const StoredMap& map) override;
+  absl::StatusOr<StoredMap> GetMap(const std::string& id) override;
+  absl::StatusOr<std::vector<StoredMap>> LoadMaps() override;
+  absl::Status DeleteMap(const std::string& id) override;
+  absl::Status PutJob(const StoredJob& job) override;
+  absl::StatusOr<std::vector<StoredJob>> LoadJobs() override;
+  absl::StatusOr<int> DeleteJobsFinishedBefore(absl::Time cutoff) override;
+
+ private:
+  explicit SqliteStore(sqlite3* db) : db_(db) {}
+  absl::Status Exec(const char* sql) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+
+  absl::Mutex mu_;
+  sqlite3* db_ ABSL_GUARDED_BY(mu_);
+};
+
+}  // namespace swarmplan::server

@@ -1,0 +1,141 @@
+// MapService over loopback: upload (structured and files), idempotent re-upload, get, list
+// with pagination, delete.
+#include "tests/integration/test_server.h"
+
+namespace swarmplan::testing {
+namespace {
+
+class MapsTest : public ::testing::Test {
+ protected:
+  TempDir dir_;
+  TestServer server_{dir_.path()};
+};
+
+v1::UploadMapRequest AsciiUpload(const std::string& name, const std::string& art) {
+  v1::UploadMapRequest request;
+  request.set_name(name);
+  v1::MapFiles* files = request.mutable_source()->mutable_files();
+  files->set_format("ascii");
+  v1::MapFile* file = files->add_files();
+  file->set_name(name + ".txt");
+  file->set_content(art);
+  return request;
+}
+
+TEST_F(MapsTest, UploadFromFileBytesParsesAndDescribesTheMap) {
+  v1::UploadMapResponse response;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server_.maps()
+                  .UploadMap(&context, AsciiUpload("corridor", "....\n.##.\n....\n"), &response)
+                  .ok());
+  EXPECT_TRUE(response.created());
+  const v1::MapInfo& info = response.map();
+  EXPECT_FALSE(info.id().empty());
+  EXPECT_EQ(info.name(), "corridor");
+  EXPECT_EQ(info.kind(), v1::MAP_KIND_OCCUPANCY_GRID);
+  EXPECT_EQ(info.width(), 4);
+  EXPECT_EQ(info.height(), 3);
+  EXPECT_EQ(info.obstacle_count(), 2);
+  EXPECT_EQ(info.format(), "ascii");
+  EXPECT_EQ(info.content_hash().size(), 64u);
+  EXPECT_GT(info.created_at().seconds(), 0);
+}
+
+TEST_F(MapsTest, ReuploadingIdenticalContentUnderTheSameNameIsIdempotent) {
+  v1::UploadMapResponse first, second, renamed;
+  grpc::ClientContext c1, c2, c3;
+  ASSERT_TRUE(server_.maps().UploadMap(&c1, AsciiUpload("a", "..\n..\n"), &first).ok());
+  ASSERT_TRUE(server_.maps().UploadMap(&c2, AsciiUpload("a", "..\n..\n"), &second).ok());
+  ASSERT_TRUE(server_.maps().UploadMap(&c3, AsciiUpload("b", "..\n..\n"), &renamed).ok());
+  EXPECT_FALSE(second.created());
+  EXPECT_EQ(second.map().id(), first.map().id());
+  EXPECT_TRUE(renamed.created());
+  EXPECT_NE(renamed.map().id(), first.map().id());
+}
+
+TEST_F(MapsTest, GetMapReturnsTheDescriptionAndOnRequestTheSource) {
+  const std::string id = server_.UploadGrid("grid", 8, 4, 3);
+  v1::GetMapRequest request;
+  request.set_id(id);
+  v1::GetMapResponse plain, full;
+  grpc::ClientContext c1, c2;
+  ASSERT_TRUE(server_.maps().GetMap(&c1, request, &plain).ok());
+  EXPECT_EQ(plain.map().id(), id);
+  EXPECT_EQ(plain.map().obstacle_count(), 3);
+  EXPECT_FALSE(plain.has_source());
+  request.set_include_source(true);
+  ASSERT_TRUE(server_.maps().GetMap(&c2, request, &full).ok());
+  ASSERT_TRUE(full.source().has_structured());
+  EXPECT_EQ(full.source().structured().occupancy_grid().cells().size(), 32u);
+}
+
+TEST_F(MapsTest, ListMapsPagesThroughEveryMapOldestFirst) {
+  std::vector<std::string> ids;
+  for (int i = 0; i < 5; ++i) ids.push_back(server_.UploadGrid("m" + std::to_string(i), 3, 3));
+  std::vector<std::string> listed;
+  std::string token;
+  int pages = 0;
+  do {
+    v1::ListMapsRequest request;
+    request.set_page_size(2);
+    request.set_page_token(token);
+    v1::ListMapsResponse response;
+    grpc::ClientContext context;
+    ASSERT_TRUE(server_.maps().ListMaps(&context, request, &response).ok());
+    EXPECT_LE(response.maps_size(), 2);
+    for (const v1::MapInfo& m : response.maps()) listed.push_back(m.id());
+    token = response.next_page_token();
+    ++pages;
+  } while (!token.empty() && pages < 10);
+  EXPECT_EQ(listed, ids);
+  EXPECT_EQ(pages, 3);
+}
+
+TEST_F(MapsTest, DeleteMapRemovesItAndASecondDeleteIsNotFound) {
+  const std::string id = server_.UploadGrid("gone", 3, 3);
+  v1::DeleteMapRequest request;
+  request.set_id(id);
+  v1::DeleteMapResponse response;
+  grpc::ClientContext c1, c2, c3;
+  ASSERT_TRUE(server_.maps().DeleteMap(&c1, request, &response).ok());
+  EXPECT_EQ(server_.maps().DeleteMap(&c2, request, &response).error_code(),
+            grpc::StatusCode::NOT_FOUND);
+  v1::GetMapRequest get;
+  get.set_id(id);
+  v1::GetMapResponse got;
+  grpc::Status status = server_.maps().GetMap(&c3, get, &got);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_NE(status.error_message().find(id), std::string::npos);
+}
+
+TEST_F(MapsTest, StructuredShapeWorldAndTerrainUpload) {
+  v1::UploadMapRequest world;
+  world.set_name("world");
+  v1::ShapeWorldData* w = world.mutable_source()->mutable_structured()->mutable_shape_world();
+  w->mutable_max()->set_x(10);
+  w->mutable_max()->set_y(10);
+  v1::Circle* c = w->add_circles();
+  c->mutable_center()->set_x(5);
+  c->mutable_center()->set_y(5);
+  c->set_radius(1);
+  v1::UploadMapResponse response;
+  grpc::ClientContext c1;
+  ASSERT_TRUE(server_.maps().UploadMap(&c1, world, &response).ok());
+  EXPECT_EQ(response.map().kind(), v1::MAP_KIND_SHAPE_WORLD);
+  EXPECT_EQ(response.map().obstacle_count(), 1);
+
+  v1::UploadMapRequest terrain;
+  terrain.set_name("hills");
+  v1::TerrainData* t = terrain.mutable_source()->mutable_structured()->mutable_terrain();
+  t->set_width(3);
+  t->set_depth(2);
+  for (double h : {1.0, 2.0, 3.0, 2.0, 1.0, 0.0}) t->add_heights(h);
+  grpc::ClientContext c2;
+  ASSERT_TRUE(server_.maps().UploadMap(&c2, terrain, &response).ok());
+  EXPECT_EQ(response.map().kind(), v1::MAP_KIND_TERRAIN);
+  EXPECT_EQ(response.map().width(), 3);
+  EXPECT_EQ(response.map().height(), 2);
+}
+
+}  // namespace
+}  // namespace swarmplan::testing

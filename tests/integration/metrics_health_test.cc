@@ -1,0 +1,170 @@
+// Operations over loopback: Prometheus metrics scraped over HTTP, gRPC health checking and
+// server reflection (spoken with a generic stub, so no generated code of theirs is needed).
+#include <grpcpp/generic/generic_stub.h>
+
+#include "tests/integration/test_server.h"
+
+namespace swarmplan::testing {
+namespace {
+
+// One unary call with raw bytes.
+grpc::Status RawUnary(grpc::Channel& channel, const std::string& method, const std::string& request,
+                      std::string* response) {
+  grpc::GenericStub stub(std::shared_ptr<grpc::Channel>(&channel, [](grpc::Channel*) {}));
+  grpc::CompletionQueue cq;
+  grpc::ClientContext context;
+  grpc::Slice slice(request);
+  grpc::ByteBuffer send(&slice, 1), receive;
+  auto call = stub.PrepareUnaryCall(&context, method, send, &cq);
+  call->StartCall();
+  grpc::Status status;
+  call->Finish(&receive, &status, reinterpret_cast<void*>(1));
+  void* tag;
+  bool ok;
+  cq.Next(&tag, &ok);
+  std::vector<grpc::Slice> slices;
+  receive.Dump(&slices);
+  response->clear();
+  for (const grpc::Slice& s : slices)
+    response->append(reinterpret_cast<const char*>(s.begin()), s.size());
+  return status;
+}
+
+// One request, one response on a bidi stream with raw bytes.
+grpc::Status RawBidiOnce(grpc::Channel& channel, const std::string& method,
+                         const std::string& request, std::string* response) {
+  grpc::GenericStub stub(std::shared_ptr<grpc::Channel>(&channel, [](grpc::Channel*) {}));
+  grpc::CompletionQueue cq;
+  grpc::ClientContext context;
+  void* tag;
+  bool ok;
+  auto call = stub.PrepareCall(&context, method, &cq);
+  call->StartCall(reinterpret_cast<void*>(1));
+  cq.Next(&tag, &ok);
+  grpc::Slice slice(request);
+  grpc::ByteBuffer send(&slice, 1), receive;
+  call->Write(send, reinterpret_cast<void*>(2));
+  cq.Next(&tag, &ok);
+  call->WritesDone(reinterpret_cast<void*>(3));
+  cq.Next(&tag, &ok);
+  call->Read(&receive, reinterpret_cast<void*>(4));
+  cq.Next(&tag, &ok);
+  std::vector<grpc::Slice> slices;
+  if (ok) receive.Dump(&slices);
+  response->clear();
+  for (const grpc::Slice& s : slices)
+    response->append(reinterpret_cast<const char*>(s.begin()), s.size());
+  grpc::Status status;
+  call->Finish(&status, reinterpret_cast<void*>(5));
+  cq.Next(&tag, &ok);
+  return status;
+}
+
+TEST(OperationsTest, MetricsAreServedOverHttpWithConventionalNames) {
+  TempDir dir;
+  TestServer server(dir.path());
+  const std::string map_id = server.UploadGrid("grid", 6, 4);
+  server.WaitUntilFinal(server.SubmitOk(TestServer::SlowRequest(map_id, 3, 0)).id());
+  v1::GetJobRequest missing;
+  missing.set_id("job-missing");
+  v1::Job job;
+  grpc::ClientContext context;
+  ASSERT_EQ(server.jobs().GetJob(&context, missing, &job).error_code(),
+            grpc::StatusCode::NOT_FOUND);
+
+  ASSERT_GT(server.server().metrics_port(), 0);
+  const std::string body = HttpGet(server.server().metrics_port(), "/metrics");
+  ASSERT_NE(body.find("200 OK"), std::string::npos) << body.substr(0, 200);
+  for (const char* line : {
+           "# TYPE swarmplan_jobs_total counter",
+           "swarmplan_jobs_total{algorithm=\"test-slow\",state=\"succeeded\"} 1",
+           "# TYPE swarmplan_job_duration_seconds histogram",
+           "swarmplan_job_duration_seconds_count{algorithm=\"test-slow\"} 1",
+           "# TYPE swarmplan_job_queue_wait_seconds histogram",
+           "# TYPE swarmplan_job_queue_depth gauge",
+           "# TYPE swarmplan_workers_busy gauge",
+           "swarmplan_workers 1",
+           "swarmplan_fitness_evaluations_total{algorithm=\"test-slow\"} 30",
+           "# TYPE swarmplan_rpc_requests_total counter",
+           "swarmplan_rpc_requests_total{code=\"OK\",method=\"swarmplan.v1.MapService/UploadMap\"} "
+           "1",
+           "swarmplan_rpc_requests_total{code=\"NOT_FOUND\",method=\"swarmplan.v1.JobService/"
+           "GetJob\"} 1",
+           "# TYPE swarmplan_rpc_duration_seconds histogram",
+           "swarmplan_maps_stored 1",
+           "swarmplan_build_info{version=",
+       }) {
+    EXPECT_NE(body.find(line), std::string::npos) << "missing: " << line;
+  }
+}
+
+TEST(OperationsTest, HealthCheckSaysServing) {
+  TempDir dir;
+  TestServer server(dir.path());
+  std::string response;
+  // HealthCheckRequest{service: ""} is empty; HealthCheckResponse{status: SERVING} is 08 01.
+  grpc::Status status = RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", "", &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response, std::string("\x08\x01", 2));
+}
+
+TEST(OperationsTest, ReflectionListsTheSwarmplanServices) {
+  TempDir dir;
+  TestServer server(dir.path());
+  std::string response;
+  // ServerReflectionRequest{list_services: ""}: field 7, length 0.
+  grpc::Status status = RawBidiOnce(
+      *server.channel(), "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo",
+      std::string("\x3a\x00", 2), &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  for (const char* service : {"swarmplan.v1.MapService", "swarmplan.v1.AlgorithmService",
+                              "swarmplan.v1.JobService", "grpc.health.v1.Health"}) {
+    EXPECT_NE(response.find(service), std::string::npos) << service;
+  }
+}
+
+TEST(OperationsTest, BearerTokenGuardsEveryRpcButHealth) {
+  TempDir dir;
+  const std::string token_file = dir.path() + "/token";
+  {
+    FILE* f = fopen(token_file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    fputs("s3cret\n", f);
+    fclose(f);
+  }
+  TempDir data;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.token_file = token_file;
+  TestServer server(data.path(), config);
+  v1::ListMapsResponse maps;
+  {
+    grpc::ClientContext context;
+    grpc::Status status = server.maps().ListMaps(&context, {}, &maps);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::UNAUTHENTICATED);
+  }
+  {
+    grpc::ClientContext context;
+    context.AddMetadata("authorization", "Bearer wrong");
+    EXPECT_EQ(server.maps().ListMaps(&context, {}, &maps).error_code(),
+              grpc::StatusCode::UNAUTHENTICATED);
+  }
+  {
+    grpc::ClientContext context;
+    context.AddMetadata("authorization", "Bearer s3cret");
+    EXPECT_TRUE(server.maps().ListMaps(&context, {}, &maps).ok());
+  }
+  {
+    grpc::ClientContext context;
+    v1::WatchJobRequest request;
+    request.set_id("job-x");
+    auto reader = server.jobs().WatchJob(&context, request);
+    grpc::Status status;
+    TestServer::ReadAll(*reader, &status);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::UNAUTHENTICATED);
+  }
+  std::string response;
+  EXPECT_TRUE(RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", "", &response).ok());
+}
+
+}  // namespace
+}  // namespace swarmplan::testing

@@ -1,0 +1,158 @@
+// Durability over restarts: maps and finished jobs survive; jobs queued or running at shutdown
+// run again with their recorded seed; acknowledged maps survive kill -9 of the server binary.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "absl/time/clock.h"
+#include "tests/integration/test_server.h"
+
+namespace swarmplan::testing {
+namespace {
+
+std::vector<v1::MapInfo> ListAllMaps(TestServer& server) {
+  v1::ListMapsResponse response;
+  grpc::ClientContext context;
+  EXPECT_TRUE(server.maps().ListMaps(&context, {}, &response).ok());
+  return {response.maps().begin(), response.maps().end()};
+}
+
+TEST(RestartTest, MapsAndJobsSurviveARestartAndUnfinishedJobsRunAgainWithTheirSeed) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.shutdown_grace = absl::Milliseconds(50);
+  std::vector<v1::MapInfo> maps_before;
+  std::string finished_id, running_id, queued_id, plan_id;
+  v1::Job finished_before;
+  {
+    TestServer server(dir.path(), config);
+    const std::string map_id = server.UploadGrid("grid", 6, 4, 3);
+    server.UploadGrid("other", 3, 3);
+    maps_before = ListAllMaps(server);
+    finished_before =
+        server.WaitUntilFinal(server.SubmitOk(TestServer::Request(map_id, "astar", 5.5)).id());
+    finished_id = finished_before.id();
+    v1::PlanRequest running = TestServer::SlowRequest(map_id, 200, 10);
+    running.set_seed(1234);
+    running_id = server.SubmitOk(running).id();
+    server.WaitForState(running_id, v1::JOB_STATE_RUNNING);
+    v1::PlanRequest queued = TestServer::SlowRequest(map_id, 3, 0);
+    queued.set_seed(0);  // the server picks one and must keep it
+    const v1::Job queued_job = server.SubmitOk(queued);
+    queued_id = queued_job.id();
+    EXPECT_NE(queued_job.seed(), 0u);
+    // A queued job whose Plan stream the shutdown cuts stays queued too.
+    grpc::ClientContext plan_context;
+    auto plan = server.jobs().Plan(&plan_context, TestServer::SlowRequest(map_id, 2, 0));
+    v1::JobEvent accepted;
+    ASSERT_TRUE(plan->Read(&accepted));
+    plan_id = accepted.job_id();
+    server.server().Shutdown();  // the running job does not finish within the grace period
+    plan->Finish();
+  }
+  TestServer server(dir.path(), config);
+  std::vector<v1::MapInfo> maps_after = ListAllMaps(server);
+  ASSERT_EQ(maps_after.size(), maps_before.size());
+  for (size_t i = 0; i < maps_after.size(); ++i) {
+    EXPECT_EQ(maps_after[i].ShortDebugString(), maps_before[i].ShortDebugString());
+  }
+  const v1::Job finished_after = server.GetJob(finished_id);
+  EXPECT_EQ(finished_after.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(finished_after.result().ShortDebugString(),
+            finished_before.result().ShortDebugString());
+
+  const v1::Job rerun = server.WaitUntilFinal(running_id);
+  EXPECT_EQ(rerun.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(rerun.seed(), 1234u);
+  EXPECT_EQ(rerun.result().seed(), 1234u);
+  EXPECT_EQ(rerun.result().iterations(), 200);
+  const v1::Job queued_rerun = server.WaitUntilFinal(queued_id);
+  EXPECT_EQ(queued_rerun.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(queued_rerun.result().seed(), queued_rerun.seed());
+  EXPECT_EQ(server.WaitUntilFinal(plan_id).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
+TEST(RestartTest, FinishedJobsOlderThanTheRetentionPeriodAreDropped) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  std::string id;
+  {
+    TestServer server(dir.path(), config);
+    const std::string map_id = server.UploadGrid("grid", 6, 4);
+    id = server.WaitUntilFinal(server.SubmitOk(TestServer::SlowRequest(map_id, 1, 0)).id()).id();
+  }
+  absl::SleepFor(absl::Milliseconds(20));
+  config.job_retention = absl::Milliseconds(10);
+  TestServer server(dir.path(), config);
+  v1::GetJobRequest request;
+  request.set_id(id);
+  v1::Job job;
+  grpc::ClientContext context;
+  EXPECT_EQ(server.jobs().GetJob(&context, request, &job).error_code(),
+            grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(ListAllMaps(server).size(), 1u);  // maps have no retention
+}
+
+int FreePort() {
+  // Ask the kernel for a free port by starting and stopping a server on port 0.
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  TestServer probe(dir.path(), config);
+  return probe.port();
+}
+
+TEST(RestartTest, AcknowledgedMapsAndJobsSurviveKill9OfTheServerBinary) {
+  TempDir dir;
+  const int port = FreePort();
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string listen = "--listen=127.0.0.1:" + std::to_string(port);
+    const std::string data = "--data-dir=" + dir.path();
+    execl(SWARMPLAN_SERVER_BINARY, SWARMPLAN_SERVER_BINARY, listen.c_str(), data.c_str(),
+          "--metrics-port=0", "--log-level=warn", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  auto channel =
+      grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
+  ASSERT_TRUE(
+      channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(20)));
+  auto maps = v1::MapService::NewStub(channel);
+  auto jobs = v1::JobService::NewStub(channel);
+  v1::UploadMapRequest upload;
+  upload.set_name("kept");
+  upload.mutable_source()->mutable_files()->set_format("ascii");
+  v1::MapFile* file = upload.mutable_source()->mutable_files()->add_files();
+  file->set_name("kept.txt");
+  file->set_content("......\n..##..\n......\n");
+  v1::UploadMapResponse uploaded;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(maps->UploadMap(&context, upload, &uploaded).ok());
+  }
+  v1::PlanRequest request = TestServer::Request(uploaded.map().id(), "astar", 5.5);
+  std::string job_id;
+  {
+    grpc::ClientContext context;
+    auto reader = jobs->Plan(&context, request);
+    grpc::Status status;
+    const std::vector<v1::JobEvent> events = TestServer::ReadAll(*reader, &status);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    job_id = events.front().job_id();
+  }
+  kill(pid, SIGKILL);
+  int wstatus = 0;
+  waitpid(pid, &wstatus, 0);
+
+  TestServer server(dir.path());
+  v1::GetMapRequest get;
+  get.set_id(uploaded.map().id());
+  v1::GetMapResponse got;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server.maps().GetMap(&context, get, &got).ok());
+  EXPECT_EQ(got.map().content_hash(), uploaded.map().content_hash());
+  EXPECT_EQ(server.GetJob(job_id).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
+}  // namespace
+}  // namespace swarmplan::testing
