@@ -25,7 +25,7 @@ int ExitCodeForStatus(grpc::StatusCode code);
 // 0 for a succeeded job, kExitNoPath for every other final state.
 int ExitCodeForJobState(v1::JobState state);
 // "NOT_FOUND", "UNAVAILABLE", ...
-const char* StatusCodeName(grpc::StatusCode code);
+std::string StatusCodeName(grpc::StatusCode code);
 // The footer of `swarmplan --help`.
 std::string ExitCodesHelp();
 

@@ -2,6 +2,8 @@
 
 #include <grpcpp/support/server_interceptor.h>
 
+#include <string>
+
 #include "server/metrics.h"
 
 namespace swarmplan::server {
@@ -19,6 +21,6 @@ class RpcMetricsInterceptorFactory final
 };
 
 // "OK", "INVALID_ARGUMENT", ...
-const char* StatusCodeName(grpc::StatusCode code);
+std::string StatusCodeName(grpc::StatusCode code);
 
 }  // namespace swarmplan::server

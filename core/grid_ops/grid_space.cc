@@ -61,4 +61,16 @@ void SetGridPath(const Problem& problem, const OccupancyGrid& grid, const std::v
   result.found = MakeCollisionChecker(*problem.map)->PathFree(result.path, problem.clearance);
 }
 
+std::vector<ParamSpec> GridSpaceParamSpecs(bool with_corner_cutting) {
+  std::vector<ParamSpec> specs;
+  if (with_corner_cutting) {
+    specs.push_back(
+        ParamSpec::Bool("allow_corner_cutting", false, "diagonal steps may pass a blocked corner"));
+  }
+  specs.push_back(ParamSpec::Double("resolution", 1.0, 1e-6, 1e9, "world units",
+                                    "cell size when a shape world is rasterised")
+                      .Ours());
+  return specs;
+}
+
 }  // namespace swarmplan

@@ -6,6 +6,7 @@
 #include "absl/status/statusor.h"
 #include "absl/time/clock.h"
 #include "core/map/occupancy_grid.h"
+#include "core/params.h"
 #include "core/planner.h"
 #include "core/problem.h"
 
@@ -23,6 +24,12 @@ struct GridSpace {
 // FAILED_PRECONDITION when start or goal lies outside the grid or in a cell that is not usable
 // for the clearance; INVALID_ARGUMENT for a map kind without a grid (terrain).
 absl::StatusOr<GridSpace> MakeGridSpace(const Problem& problem, double resolution);
+
+// The parameters every grid-node planner declares: `allow_corner_cutting` (diagonal steps may
+// pass a blocked corner; default false) and `resolution` (cell size when a shape world is
+// rasterised; default 1 world unit, ours). Fish swarms have no corner rule: they take only the
+// resolution.
+std::vector<ParamSpec> GridSpaceParamSpecs(bool with_corner_cutting = true);
 
 // Fills path (cell centres, z = 0), fitness and found (the path is collision-free on the
 // problem's own map, checked exactly) from a cell path; leaves them empty when `cells` is.

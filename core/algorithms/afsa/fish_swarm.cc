@@ -232,7 +232,7 @@ FishSwarmParams FishSwarmParams::Defaults(Variant variant) {
 
 std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
   const FishSwarmParams d = Defaults(variant);
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Enum("neighbourhood", NeighbourhoodName(d.neighbourhood), {"4", "8", "24"},
                       "cells a fish may move to: 4, 8 or 24 (16 directions, steps up to 2√2)"),
       ParamSpec::Bool("segment_check", d.segment_check,
@@ -251,10 +251,11 @@ std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
       ParamSpec::Double("step_max", d.step_max, 1.0, 1e6, "cells", "step_max of eq 11"),
       ParamSpec::Double("feedback_gain", d.feedback_gain, 0.0, 1e6, "",
                         "m of eq 9 (paper: 17 on 10x10, 10 on 20x20)"),
-      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
-                        "cell size when a shape world is rasterised")
-          .Ours(),
   };
+  for (ParamSpec& spec : GridSpaceParamSpecs(/*with_corner_cutting=*/false)) {
+    specs.push_back(std::move(spec));
+  }
+  return specs;
 }
 
 FishSwarmParams FishSwarmParams::From(const ParamSet& set) {

@@ -125,7 +125,7 @@ class GridAcoSearch {
 
 std::vector<ParamSpec> GridAcoParams::Specs() {
   const GridAcoParams d;
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Int("ants", d.ants, 1, 100000, "ants", "ants per iteration"),
       ParamSpec::Double("alpha", d.alpha, 0.0, 20.0, "", "pheromone exponent α"),
       ParamSpec::Double("beta", d.beta, 0.0, 20.0, "", "heuristic exponent β"),
@@ -133,12 +133,9 @@ std::vector<ParamSpec> GridAcoParams::Specs() {
       ParamSpec::Double("q", d.q, 0.0, 1e9, "", "deposit Q"),
       ParamSpec::Int("iterations", d.iterations, 1, 1000000, "iterations", "iterations").Ours(),
       ParamSpec::Double("tau0", d.tau0, 1e-9, 1e9, "", "initial pheromone").Ours(),
-      ParamSpec::Bool("allow_corner_cutting", d.allow_corner_cutting,
-                      "diagonal steps may pass a blocked corner"),
-      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
-                        "cell size when a shape world is rasterised")
-          .Ours(),
   };
+  for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  return specs;
 }
 
 GridAcoParams GridAcoParams::From(const ParamSet& set) {

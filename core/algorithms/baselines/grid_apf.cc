@@ -100,7 +100,7 @@ class GridApfSearch {
 
 std::vector<ParamSpec> GridApfParams::Specs() {
   const GridApfParams d;
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Double("k_att", d.k_att, 0.0, 1e9, "", "attractive gain").Ours(),
       ParamSpec::Double("k_rep", d.k_rep, 0.0, 1e12, "", "repulsive gain").Ours(),
       ParamSpec::Double("influence", d.influence, 1e-6, 1e6, "cells",
@@ -108,12 +108,9 @@ std::vector<ParamSpec> GridApfParams::Specs() {
           .Ours(),
       ParamSpec::Int("max_steps", d.max_steps, 1, 100000000, "iterations", "most descent steps")
           .Ours(),
-      ParamSpec::Bool("allow_corner_cutting", d.allow_corner_cutting,
-                      "diagonal steps may pass a blocked corner"),
-      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
-                        "cell size when a shape world is rasterised")
-          .Ours(),
   };
+  for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  return specs;
 }
 
 GridApfParams GridApfParams::From(const ParamSet& set) {

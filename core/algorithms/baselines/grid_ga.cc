@@ -144,7 +144,7 @@ class GridGaSearch {
 
 std::vector<ParamSpec> GridGaParams::Specs() {
   const GridGaParams d;
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Int("population", d.population, 2, 100000, "individuals", "population size")
           .Ours(),
       ParamSpec::Int("generations", d.generations, 1, 1000000, "iterations", "generations").Ours(),
@@ -160,12 +160,9 @@ std::vector<ParamSpec> GridGaParams::Specs() {
       ParamSpec::Int("max_waypoints", d.max_waypoints, 0, 100, "cells",
                      "random cells (1..max) an initial path passes through")
           .Ours(),
-      ParamSpec::Bool("allow_corner_cutting", d.allow_corner_cutting,
-                      "diagonal steps may pass a blocked corner"),
-      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
-                        "cell size when a shape world is rasterised")
-          .Ours(),
   };
+  for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  return specs;
 }
 
 GridGaParams GridGaParams::From(const ParamSet& set) {

@@ -185,7 +185,7 @@ class AsBfoSearch {
 
 std::vector<ParamSpec> AsBfoParams::Specs() {
   const AsBfoParams d;
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Int("population", d.population, 2, 10000, "bacteria", "P, the number of bacteria"),
       ParamSpec::Int("chemotactic_steps", d.chemotactic_steps, 1, 10000, "steps",
                      "Nc, chemotactic steps per reproduction"),
@@ -205,12 +205,9 @@ std::vector<ParamSpec> AsBfoParams::Specs() {
       ParamSpec::Bool("keep_worse_tumbles", d.keep_worse_tumbles,
                       "a tumble moves the bacterium even when the path gets longer (classic BFO)")
           .Ours(),
-      ParamSpec::Bool("allow_corner_cutting", d.allow_corner_cutting,
-                      "diagonal steps may pass a blocked corner"),
-      ParamSpec::Double("resolution", d.resolution, 1e-6, 1e9, "world units",
-                        "cell size when a shape world is rasterised")
-          .Ours(),
   };
+  for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  return specs;
 }
 
 AsBfoParams AsBfoParams::From(const ParamSet& set) {
