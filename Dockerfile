@@ -1,0 +1,46 @@
+# swarmplan: a multi-stage build. The build stage installs the dev packages, builds in Release
+# and runs the unit tests; the runtime stage carries only the runtime libraries, the two
+# binaries and the sample maps.
+#
+#   docker build -t swarmplan .
+#   docker run -p 127.0.0.1:50051:50051 -p 127.0.0.1:9464:9464 -v swarmplan-data:/data swarmplan
+
+FROM debian:bookworm-slim AS build
+WORKDIR /src
+COPY scripts/install-deps scripts/install-deps
+RUN scripts/install-deps && apt-get clean && rm -rf /var/lib/apt/lists/*
+COPY . .
+RUN cmake -S . -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSWARMPLAN_WERROR=ON \
+      -DSWARMPLAN_BUILD_BENCH=OFF -DSWARMPLAN_SHARED_DIR=/nonexistent \
+ && cmake --build /build -j "$(nproc)" --target swarmplan-server swarmplan swarmplan_unit_tests \
+ && /build/tests/swarmplan_unit_tests --gtest_brief=1 \
+ && install -D -s /build/server/swarmplan-server /out/usr/local/bin/swarmplan-server \
+ && install -D -s /build/client/swarmplan /out/usr/local/bin/swarmplan \
+ && mkdir -p /out/usr/local/share/swarmplan && cp -r samples/maps /out/usr/local/share/swarmplan/
+
+FROM debian:bookworm-slim
+RUN apt-get update -qq \
+ && apt-get install -y -qq --no-install-recommends \
+      libgrpc++1.51 libprotobuf32 libabsl20220623 libspdlog1.10 libfmt9 \
+      libprometheus-cpp-core1.0 libprometheus-cpp-pull1.0 libsqlite3-0 libhiredis0.14 \
+      libyaml-cpp0.7 libpng16-16 ca-certificates \
+ && apt-get clean && rm -rf /var/lib/apt/lists/* \
+ && useradd --system --uid 10001 --home-dir /data --shell /usr/sbin/nologin swarmplan \
+ && mkdir -p /data && chown swarmplan:swarmplan /data
+COPY --from=build /out/ /
+
+USER swarmplan
+VOLUME /data
+ENV SWARMPLAN_LISTEN=0.0.0.0:50051 \
+    SWARMPLAN_METRICS_ADDRESS=0.0.0.0 \
+    SWARMPLAN_METRICS_PORT=9464 \
+    SWARMPLAN_DATA_DIR=/data \
+    SWARMPLAN_SHUTDOWN_GRACE=20s \
+    SWARMPLAN_SERVER=127.0.0.1:50051
+EXPOSE 50051 9464
+HEALTHCHECK --interval=10s --timeout=3s --start-period=5s --retries=3 \
+  CMD ["swarmplan", "health", "--timeout", "2"]
+# SIGTERM starts a graceful shutdown: running jobs get SWARMPLAN_SHUTDOWN_GRACE to finish and
+# are re-queued in the store otherwise. `docker stop -t 30` leaves room for that.
+STOPSIGNAL SIGTERM
+ENTRYPOINT ["swarmplan-server"]
