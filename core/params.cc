@@ -34,26 +34,31 @@ std::string FormatParamValue(const ParamValue& value) {
 
 ParamSpec ParamSpec::Int(std::string name, int64_t def, std::optional<double> min,
                          std::optional<double> max, std::string unit, std::string description) {
-  return ParamSpec{std::move(name), ParamType::kInt, def, min, max, {}, std::move(unit),
-                   std::move(description)};
+  return ParamSpec{std::move(name), ParamType::kInt,       def, min, max, {},
+                   std::move(unit), std::move(description)};
 }
 
 ParamSpec ParamSpec::Double(std::string name, double def, std::optional<double> min,
-                            std::optional<double> max, std::string unit,
-                            std::string description) {
-  return ParamSpec{std::move(name), ParamType::kDouble, def, min, max, {}, std::move(unit),
-                   std::move(description)};
+                            std::optional<double> max, std::string unit, std::string description) {
+  return ParamSpec{std::move(name), ParamType::kDouble,    def, min, max, {},
+                   std::move(unit), std::move(description)};
 }
 
 ParamSpec ParamSpec::Bool(std::string name, bool def, std::string description) {
-  return ParamSpec{std::move(name), ParamType::kBool, def, std::nullopt, std::nullopt, {}, "",
+  return ParamSpec{std::move(name),       ParamType::kBool, def, std::nullopt, std::nullopt, {}, "",
                    std::move(description)};
 }
 
 ParamSpec ParamSpec::Enum(std::string name, std::string def, std::vector<std::string> choices,
                           std::string description) {
-  return ParamSpec{std::move(name), ParamType::kEnum,      std::move(def), std::nullopt,
-                   std::nullopt,    std::move(choices), "",             std::move(description)};
+  return ParamSpec{std::move(name),
+                   ParamType::kEnum,
+                   std::move(def),
+                   std::nullopt,
+                   std::nullopt,
+                   std::move(choices),
+                   "",
+                   std::move(description)};
 }
 
 namespace {
@@ -76,10 +81,9 @@ absl::Status CheckRange(const ParamSpec& spec, double v) {
 
 absl::Status WrongType(const ParamSpec& spec, const ParamValue& given) {
   static constexpr const char* kGivenNames[] = {"bool", "int", "double", "string"};
-  return absl::InvalidArgumentError(absl::StrCat("parameter '", spec.name, "': expected ",
-                                                 ParamTypeName(spec.type), ", got ",
-                                                 kGivenNames[given.index()], " ",
-                                                 FormatParamValue(given)));
+  return absl::InvalidArgumentError(
+      absl::StrCat("parameter '", spec.name, "': expected ", ParamTypeName(spec.type), ", got ",
+                   kGivenNames[given.index()], " ", FormatParamValue(given)));
 }
 
 absl::StatusOr<ParamValue> Coerce(const ParamSpec& spec, const ParamValue& given) {
@@ -136,9 +140,9 @@ absl::StatusOr<ParamSet> ParamSet::Resolve(const std::vector<ParamSpec>& specs,
     if (!known) {
       std::vector<std::string> names;
       for (const ParamSpec& spec : specs) names.push_back(spec.name);
-      return absl::InvalidArgumentError(absl::StrCat(
-          "unknown parameter '", name, "'; this planner accepts: ",
-          names.empty() ? std::string("no parameters") : absl::StrJoin(names, ", ")));
+      return absl::InvalidArgumentError(
+          absl::StrCat("unknown parameter '", name, "'; this planner accepts: ",
+                       names.empty() ? std::string("no parameters") : absl::StrJoin(names, ", ")));
     }
   }
   ParamSet set;

@@ -24,12 +24,12 @@ struct ParamSpec {
   std::string name;
   ParamType type = ParamType::kDouble;
   ParamValue default_value;
-  std::optional<double> min;          // inclusive, for kInt and kDouble
-  std::optional<double> max;          // inclusive, for kInt and kDouble
-  std::vector<std::string> choices;   // for kEnum
-  std::string unit;                   // "cells", "iterations", "" for dimensionless
+  std::optional<double> min;         // inclusive, for kInt and kDouble
+  std::optional<double> max;         // inclusive, for kInt and kDouble
+  std::vector<std::string> choices;  // for kEnum
+  std::string unit;                  // "cells", "iterations", "" for dimensionless
   std::string description;
-  bool ours = false;                  // default chosen by us, not given by the paper
+  bool ours = false;  // default chosen by us, not given by the paper
 
   static ParamSpec Int(std::string name, int64_t def, std::optional<double> min,
                        std::optional<double> max, std::string unit, std::string description);

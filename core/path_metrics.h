@@ -7,11 +7,11 @@ namespace swarmplan {
 
 // The measures every plan reports, whatever the planner.
 struct PathMetrics {
-  double length = 0.0;         // world units on 2D maps; grid units (x, y, z) on terrain
-  double min_clearance = 0.0;  // smallest distance from the path to an obstacle
-  double max_curvature = 0.0;  // largest discrete curvature at an interior vertex (1/length)
-  int turning_points = 0;      // interior vertices where the heading changes
-  bool collision_free = false; // every point keeps the requested clearance, inside the map
+  double length = 0.0;          // world units on 2D maps; grid units (x, y, z) on terrain
+  double min_clearance = 0.0;   // smallest distance from the path to an obstacle
+  double max_curvature = 0.0;   // largest discrete curvature at an interior vertex (1/length)
+  int turning_points = 0;       // interior vertices where the heading changes
+  bool collision_free = false;  // every point keeps the requested clearance, inside the map
 };
 
 // Evaluates a path on a map for a given clearance. An empty path has collision_free = false.

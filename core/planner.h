@@ -20,7 +20,7 @@ struct IterationStats {
   double mean_fitness = 0.0;  // of the population in this iteration
   int64_t evaluations = 0;    // fitness evaluations so far
   absl::Duration elapsed;
-  bool feasible = false;      // the best so far is collision-free
+  bool feasible = false;  // the best so far is collision-free
 };
 
 class Observer {
@@ -36,8 +36,8 @@ class NullObserver final : public Observer {
 
 // What a planner's search returns. RunPlan adds smoothing, metrics and timing.
 struct SearchResult {
-  bool found = false;   // a collision-free path was found
-  Path path;            // raw waypoints, start first and goal last; empty when nothing found
+  bool found = false;  // a collision-free path was found
+  Path path;           // raw waypoints, start first and goal last; empty when nothing found
   double fitness = 0.0;
   int iterations = 0;
   int64_t evaluations = 0;

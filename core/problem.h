@@ -9,7 +9,7 @@
 namespace swarmplan {
 
 struct Limits {
-  int max_iterations = 0;                              // 0: the planner's own default
+  int max_iterations = 0;  // 0: the planner's own default
   absl::Duration time_budget = absl::InfiniteDuration();
 };
 

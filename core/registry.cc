@@ -62,8 +62,8 @@ std::vector<std::string> Registry::Ids() const {
 
 absl::StatusOr<const PlannerInfo*> Registry::Get(const std::string& id) const {
   if (const PlannerInfo* info = Find(id)) return info;
-  return absl::NotFoundError(absl::StrCat("unknown algorithm '", id,
-                                          "'; available: ", absl::StrJoin(Ids(), ", ")));
+  return absl::NotFoundError(
+      absl::StrCat("unknown algorithm '", id, "'; available: ", absl::StrJoin(Ids(), ", ")));
 }
 
 absl::StatusOr<std::unique_ptr<Planner>> Registry::Create(const std::string& id,

@@ -69,8 +69,8 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
   bool known_smoothing = false;
   for (const std::string& m : SmoothingMethods()) known_smoothing |= m == request.smoothing;
   if (!known_smoothing && !request.smoothing.empty()) {
-    return absl::InvalidArgumentError(absl::StrCat("smoothing: unknown method '",
-                                                   request.smoothing, "'"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("smoothing: unknown method '", request.smoothing, "'"));
   }
   const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(map);
   if (absl::Status s = CheckEndpoint(map, *checker, problem.start, problem.clearance, "start");

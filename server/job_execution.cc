@@ -78,7 +78,7 @@ void JobManager::Execute(const JobPtr& job) {
       started.mutable_started();
       return started;
     }());
-    metrics_.JobStarted(absl::ToDoubleSeconds(now - job->queued_at));
+    metrics_.JobStarted(job->plan.algorithm, absl::ToDoubleSeconds(now - job->queued_at));
     spdlog::info("job {} running algorithm={} map={} queue_wait={:.3f}s", job->id,
                  job->plan.algorithm, job->record.request().map_id(),
                  absl::ToDoubleSeconds(now - job->queued_at));

@@ -60,12 +60,11 @@ struct Metrics::Impl {
                                              .Name("swarmplan_job_duration_seconds")
                                              .Help("Planning time of finished jobs")
                                              .Register(*registry)};
-  prometheus::Histogram& queue_wait =
+  Cached<prometheus::Histogram> queue_wait{
       prometheus::BuildHistogram()
           .Name("swarmplan_job_queue_wait_seconds")
-          .Help("Time jobs waited in the queue before a worker took them")
-          .Register(*registry)
-          .Add({}, TimeBuckets());
+          .Help("Time jobs waited in the queue before a worker took them, by algorithm")
+          .Register(*registry)};
   prometheus::Gauge& queue_depth = prometheus::BuildGauge()
                                        .Name("swarmplan_job_queue_depth")
                                        .Help("Jobs waiting for a worker")
@@ -122,8 +121,8 @@ void Metrics::JobFinished(const std::string& algorithm, const std::string& state
   impl_->evaluations.Get({{"algorithm", algorithm}}).Increment(static_cast<double>(evaluations));
 }
 
-void Metrics::JobStarted(double queue_wait_seconds) {
-  impl_->queue_wait.Observe(queue_wait_seconds);
+void Metrics::JobStarted(const std::string& algorithm, double queue_wait_seconds) {
+  impl_->queue_wait.Get({{"algorithm", algorithm}}, TimeBuckets()).Observe(queue_wait_seconds);
 }
 
 void Metrics::SetQueueDepth(int depth) { impl_->queue_depth.Set(depth); }

@@ -11,7 +11,7 @@ namespace swarmplan::server {
 //
 //   swarmplan_jobs_total{algorithm,state}            jobs finished, by final state
 //   swarmplan_job_duration_seconds{algorithm}        planning time of finished jobs
-//   swarmplan_job_queue_wait_seconds                 time from queued to started
+//   swarmplan_job_queue_wait_seconds{algorithm}      time from queued to started
 //   swarmplan_job_queue_depth                        jobs waiting
 //   swarmplan_workers_busy / swarmplan_workers       workers planning / in the pool
 //   swarmplan_fitness_evaluations_total{algorithm}   fitness evaluations of finished jobs
@@ -26,7 +26,7 @@ class Metrics {
 
   void JobFinished(const std::string& algorithm, const std::string& state, double seconds,
                    int64_t evaluations);
-  void JobStarted(double queue_wait_seconds);
+  void JobStarted(const std::string& algorithm, double queue_wait_seconds);
   void SetQueueDepth(int depth);
   void SetWorkers(int busy, int total);
   void SetMapsStored(int maps);

@@ -7,10 +7,10 @@ namespace swarmplan {
 // Bounds that keep a hostile or mistaken input from exhausting memory. Loaders and
 // constructors reject anything larger with a clear error instead of allocating it.
 struct MapLimits {
-  int64_t max_cells = 64LL * 1024 * 1024;     // grid or terrain cells
+  int64_t max_cells = 64LL * 1024 * 1024;  // grid or terrain cells
   int64_t max_file_bytes = 256LL * 1024 * 1024;
-  int64_t max_obstacles = 100000;             // circles + polygons in a ShapeWorld
-  int64_t max_vertices = 1000000;             // polygon vertices in a ShapeWorld, in all
+  int64_t max_obstacles = 100000;  // circles + polygons in a ShapeWorld
+  int64_t max_vertices = 1000000;  // polygon vertices in a ShapeWorld, in all
 };
 
 }  // namespace swarmplan

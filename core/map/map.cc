@@ -17,9 +17,8 @@ const char* MapKindName(MapKind kind) {
 }
 
 std::string JoinMapKinds(const std::vector<MapKind>& kinds) {
-  return absl::StrJoin(kinds, ", ", [](std::string* out, MapKind kind) {
-    out->append(MapKindName(kind));
-  });
+  return absl::StrJoin(kinds, ", ",
+                       [](std::string* out, MapKind kind) { out->append(MapKindName(kind)); });
 }
 
 }  // namespace swarmplan

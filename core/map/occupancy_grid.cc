@@ -17,8 +17,8 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
   }
   const int64_t count = static_cast<int64_t>(width) * height;
   if (count > limits.max_cells) {
-    return absl::ResourceExhaustedError(absl::StrCat("grid of ", width, " x ", height, " = ",
-                                                     count, " cells exceeds the limit of ",
+    return absl::ResourceExhaustedError(absl::StrCat("grid of ", width, " x ", height, " = ", count,
+                                                     " cells exceeds the limit of ",
                                                      limits.max_cells, " cells"));
   }
   if (static_cast<int64_t>(cells.size()) != count) {

@@ -48,9 +48,7 @@ class OccupancyGrid {
   double DistanceToObstacle(int x, int y) const { return distance_[Index(x, y)]; }
   const std::vector<double>& distance_field() const { return distance_; }
 
-  Point2 CellCenter(Cell c) const {
-    return origin_ + Point2(c.x + 0.5, c.y + 0.5) * resolution_;
-  }
+  Point2 CellCenter(Cell c) const { return origin_ + Point2(c.x + 0.5, c.y + 0.5) * resolution_; }
   // The cell containing a world point (may be outside the grid).
   Cell CellAt(const Point2& p) const;
 

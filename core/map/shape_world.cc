@@ -25,13 +25,11 @@ absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle
                                               const MapLimits& limits) {
   if (!bounds.min.allFinite() || !bounds.max.allFinite() || bounds.Width() <= 0 ||
       bounds.Height() <= 0) {
-    return absl::InvalidArgumentError(
-        "bounds: must be finite with max > min in both x and y");
+    return absl::InvalidArgumentError("bounds: must be finite with max > min in both x and y");
   }
   if (static_cast<int64_t>(circles.size() + polygons.size()) > limits.max_obstacles) {
-    return absl::ResourceExhaustedError(absl::StrCat(circles.size() + polygons.size(),
-                                                     " obstacles exceed the limit of ",
-                                                     limits.max_obstacles));
+    return absl::ResourceExhaustedError(absl::StrCat(
+        circles.size() + polygons.size(), " obstacles exceed the limit of ", limits.max_obstacles));
   }
   for (size_t i = 0; i < circles.size(); ++i) {
     const Circle& c = circles[i];

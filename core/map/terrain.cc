@@ -44,8 +44,8 @@ absl::StatusOr<Terrain> Terrain::Create(int width, int depth, std::vector<double
   if (lo > hi) return absl::InvalidArgumentError("terrain has no cell with data");
   if (std::isnan(ceiling)) ceiling = hi + std::max(1.0, hi - lo);
   if (!std::isfinite(ceiling) || ceiling <= hi) {
-    return absl::InvalidArgumentError(absl::StrCat("ceiling ", ceiling,
-                                                   " must be above the highest ground ", hi));
+    return absl::InvalidArgumentError(
+        absl::StrCat("ceiling ", ceiling, " must be above the highest ground ", hi));
   }
   Terrain t;
   t.width_ = width;

@@ -81,6 +81,7 @@ TEST(OperationsTest, MetricsAreServedOverHttpWithConventionalNames) {
            "# TYPE swarmplan_job_duration_seconds histogram",
            "swarmplan_job_duration_seconds_count{algorithm=\"test-slow\"} 1",
            "# TYPE swarmplan_job_queue_wait_seconds histogram",
+           "swarmplan_job_queue_wait_seconds_count{algorithm=\"test-slow\"} 1",
            "# TYPE swarmplan_job_queue_depth gauge",
            "# TYPE swarmplan_workers_busy gauge",
            "swarmplan_workers 1",

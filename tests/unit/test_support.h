@@ -19,11 +19,11 @@ inline std::string SourceDir() { return SWARMPLAN_SOURCE_DIR; }
 }  // namespace swarmplan::testing
 
 // Skips the current test with a clear message when ../shared/benchmarks/SUB is missing.
-#define SWARMPLAN_REQUIRE_BENCHMARKS(sub)                                                 \
-  do {                                                                                    \
-    if (::swarmplan::testing::BenchmarksDir().empty() ||                                  \
-        !std::filesystem::exists(::swarmplan::testing::BenchmarksDir() + "/" + (sub))) {  \
-      GTEST_SKIP() << "benchmark data not found: " << SWARMPLAN_SHARED_DIR                \
-                   << "/benchmarks/" << (sub) << " (the shared folder beside the repo)";  \
-    }                                                                                     \
+#define SWARMPLAN_REQUIRE_BENCHMARKS(sub)                                                    \
+  do {                                                                                       \
+    if (::swarmplan::testing::BenchmarksDir().empty() ||                                     \
+        !std::filesystem::exists(::swarmplan::testing::BenchmarksDir() + "/" + (sub))) {     \
+      GTEST_SKIP() << "benchmark data not found: " << SWARMPLAN_SHARED_DIR << "/benchmarks/" \
+                   << (sub) << " (the shared folder beside the repo)";                       \
+    }                                                                                        \
   } while (0)
