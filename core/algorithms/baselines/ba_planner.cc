@@ -2,6 +2,7 @@
 
 #include "core/algorithms/baselines/ba.h"
 #include "core/algorithms/bso/register_beetle.h"
+#include "core/algorithms/bso/swarm_options.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
@@ -32,15 +33,7 @@ void RegisterBatPlanner(Registry& registry) {
                                           "local walk scale as a fraction of the span")
                             .Ours());
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
-    BatOptions options;
-    options.population = static_cast<int>(params.Int("population"));
-    options.f_min = params.Double("f_min");
-    options.f_max = params.Double("f_max");
-    options.loudness0 = params.Double("loudness0");
-    options.pulse_rate0 = params.Double("pulse_rate0");
-    options.alpha = params.Double("alpha");
-    options.gamma = params.Double("gamma");
-    options.walk_fraction = params.Double("walk_fraction");
+    const BatOptions options = BatOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(
         WaypointObjectiveFactory(WaypointFitnessFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,

@@ -3,6 +3,7 @@
 
 #include "core/algorithms/bso/beetle_swarm.h"
 #include "core/algorithms/bso/register_beetle.h"
+#include "core/algorithms/bso/swarm_options.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
@@ -55,20 +56,7 @@ PlannerInfo SwarmInfo(const std::string& id, const std::string& description, boo
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
   info.params = SwarmParams(aem, inertia);
   info.factory = [aem](const ParamSet& params) -> std::unique_ptr<Planner> {
-    BeetleSwarmOptions options;
-    options.population = static_cast<int>(params.Int("population"));
-    options.good_point_init = aem;
-    options.inertia = *ParseInertiaSchedule(params.Enum("inertia"));
-    options.w_max = params.Double("w_max");
-    options.w_min = params.Double("w_min");
-    options.c1 = params.Double("c1");
-    options.c2 = params.Double("c2");
-    options.c3 = params.Double("c3");
-    options.step_fraction = params.Double("step_fraction");
-    options.step_decay = params.Double("step_decay");
-    options.velocity_fraction = params.Double("velocity_fraction");
-    options.elite_mutation = aem;
-    if (aem) options.mutation = {params.Double("k1"), params.Double("k2"), params.Double("k3")};
+    const BeetleSwarmOptions options = BeetleSwarmOptionsFromParams(aem, params);
     return std::make_unique<PathSearchPlanner>(
         WaypointObjectiveFactory(WaypointFitnessFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,

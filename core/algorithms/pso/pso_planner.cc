@@ -2,6 +2,7 @@
 
 #include "core/algorithms/bso/beetle_swarm.h"
 #include "core/algorithms/bso/register_beetle.h"
+#include "core/algorithms/bso/swarm_options.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
@@ -27,15 +28,7 @@ void RegisterPsoPlanner(Registry& registry) {
                                           "velocity clamp as a fraction of the span")
                             .Ours());
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
-    BeetleSwarmOptions options;
-    options.population = static_cast<int>(params.Int("population"));
-    options.antennae = false;
-    options.inertia = InertiaSchedule::kLinear;
-    options.w_max = params.Double("w_max");
-    options.w_min = params.Double("w_min");
-    options.c1 = params.Double("c1");
-    options.c2 = params.Double("c2");
-    options.velocity_fraction = params.Double("velocity_fraction");
+    const BeetleSwarmOptions options = PsoOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(
         WaypointObjectiveFactory(WaypointFitnessFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
