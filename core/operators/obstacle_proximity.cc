@@ -15,6 +15,15 @@ bool BoxesOverlap(const Point2& amin, const Point2& amax, const Point2& bmin, co
          bmin.y() <= amax.y();
 }
 
+// The obstacle buckets per side of the bounds' larger dimension.
+constexpr double kBucketsPerSide = 32.0;
+
+// floor(v) as an int without a libm call (v within the int range).
+int FloorToInt(double v) {
+  const int i = static_cast<int>(v);
+  return v < i ? i - 1 : i;
+}
+
 }  // namespace
 
 absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, double threshold) {
@@ -24,16 +33,51 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
     p.world_ = world;
     p.lower_ = world->bounds().min;
     p.upper_ = world->bounds().max;
+    for (const Circle& circle : world->circles()) {
+      p.grown_min_.push_back(circle.center.array() - circle.radius - threshold);
+      p.grown_max_.push_back(circle.center.array() + circle.radius + threshold);
+    }
+    const Point2 margin(threshold, threshold);
     for (const Polygon& poly : world->polygons()) {
       Point2 lo = poly.vertices[0], hi = poly.vertices[0];
       for (const Point2& v : poly.vertices) {
         lo = lo.cwiseMin(v);
         hi = hi.cwiseMax(v);
       }
-      p.polygon_min_.push_back(lo);
-      p.polygon_max_.push_back(hi);
+      p.grown_min_.push_back(lo - margin);
+      p.grown_max_.push_back(hi + margin);
     }
     p.obstacle_count_ = static_cast<int>(world->ObstacleCount());
+    p.seen_stamp_.assign(p.obstacle_count_, 0);
+    const double span = std::max(world->bounds().Width(), world->bounds().Height());
+    p.bucket_inv_size_ = kBucketsPerSide / span;
+    p.buckets_x_ =
+        std::max(1, static_cast<int>(std::ceil(world->bounds().Width() * p.bucket_inv_size_)));
+    p.buckets_y_ =
+        std::max(1, static_cast<int>(std::ceil(world->bounds().Height() * p.bucket_inv_size_)));
+    // Two passes over the obstacles: count per bucket, then fill.
+    std::vector<int32_t> fill(static_cast<size_t>(p.buckets_x_) * p.buckets_y_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int k = 0; k < p.obstacle_count_; ++k) {
+        int x0, x1, y0, y1;
+        p.BucketRange(p.grown_min_[k], p.grown_max_[k], x0, x1, y0, y1);
+        for (int by = y0; by <= y1; ++by) {
+          for (int bx = x0; bx <= x1; ++bx) {
+            const size_t b = static_cast<size_t>(by) * p.buckets_x_ + bx;
+            if (pass == 0) {
+              ++fill[b + 1];
+            } else {
+              p.bucket_items_[fill[b]++] = k;
+            }
+          }
+        }
+      }
+      if (pass == 0) {
+        for (size_t b = 1; b < fill.size(); ++b) fill[b] += fill[b - 1];
+        p.bucket_start_ = fill;
+        p.bucket_items_.resize(fill.back());
+      }
+    }
     return p;
   }
   const OccupancyGrid* grid = map.grid();
@@ -98,46 +142,59 @@ int ObstacleProximity::CountViolations(const Path& path) {
   return world_ != nullptr ? CountOnWorld(path) : CountOnGrid(path);
 }
 
-int ObstacleProximity::CountOnWorld(const Path& path) const {
+void ObstacleProximity::NextStamp() {
+  if (++stamp_ == 0) {  // wrapped: forget every mark
+    std::fill(seen_stamp_.begin(), seen_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+}
+
+void ObstacleProximity::BucketRange(const Point2& lo, const Point2& hi, int& x0, int& x1, int& y0,
+                                    int& y1) const {
+  auto bucket = [this](double v, double origin, int count) {
+    const double scaled = (v - origin) * bucket_inv_size_;
+    if (!(scaled > 0.0)) return 0;  // also NaN
+    if (scaled >= count) return count - 1;
+    return static_cast<int>(scaled);
+  };
+  x0 = bucket(lo.x(), lower_.x(), buckets_x_);
+  x1 = bucket(hi.x(), lower_.x(), buckets_x_);
+  y0 = bucket(lo.y(), lower_.y(), buckets_y_);
+  y1 = bucket(hi.y(), lower_.y(), buckets_y_);
+}
+
+int ObstacleProximity::CountOnWorld(const Path& path) {
   if (path.empty()) return 0;
-  int count = 0;
-  Point2 path_min = path[0].head<2>(), path_max = path_min;
+  NextStamp();
   bool outside = false;
   for (const Point3& q : path) {
-    const Point2 p = q.head<2>();
-    path_min = path_min.cwiseMin(p);
-    path_max = path_max.cwiseMax(p);
-    outside = outside || p.x() < lower_.x() || p.y() < lower_.y() || p.x() > upper_.x() ||
-              p.y() > upper_.y();
+    outside = outside || q.x() < lower_.x() || q.y() < lower_.y() || q.x() > upper_.x() ||
+              q.y() > upper_.y();
   }
-  if (outside) ++count;
-  const Point2 margin(threshold_, threshold_);
+  int count = outside ? 1 : 0;
+  const int circles = static_cast<int>(world_->circles().size());
   const size_t segments = path.size() > 1 ? path.size() - 1 : 1;
-  for (const Circle& circle : world_->circles()) {
-    const Point2 cmin = circle.center.array() - circle.radius - threshold_;
-    const Point2 cmax = circle.center.array() + circle.radius + threshold_;
-    if (!BoxesOverlap(path_min, path_max, cmin, cmax)) continue;
-    for (size_t i = 0; i < segments; ++i) {
-      const Point2 a = path[i].head<2>();
-      const Point2 b = path[std::min(i + 1, path.size() - 1)].head<2>();
-      if (!BoxesOverlap(a.cwiseMin(b), a.cwiseMax(b), cmin, cmax)) continue;
-      if (SegmentCircleDistance(a, b, circle) < threshold_) {
-        ++count;
-        break;
-      }
-    }
-  }
-  const auto& polygons = world_->polygons();
-  for (size_t k = 0; k < polygons.size(); ++k) {
-    const Point2 pmin = polygon_min_[k] - margin, pmax = polygon_max_[k] + margin;
-    if (!BoxesOverlap(path_min, path_max, pmin, pmax)) continue;
-    for (size_t i = 0; i < segments; ++i) {
-      const Point2 a = path[i].head<2>();
-      const Point2 b = path[std::min(i + 1, path.size() - 1)].head<2>();
-      if (!BoxesOverlap(a.cwiseMin(b), a.cwiseMax(b), pmin, pmax)) continue;
-      if (SegmentPolygonDistance(a, b, polygons[k].vertices) < threshold_) {
-        ++count;
-        break;
+  for (size_t i = 0; i < segments; ++i) {
+    const Point2 a = path[i].head<2>();
+    const Point2 b = path[std::min(i + 1, path.size() - 1)].head<2>();
+    const Point2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+    int x0, x1, y0, y1;
+    BucketRange(smin, smax, x0, x1, y0, y1);
+    for (int by = y0; by <= y1; ++by) {
+      for (int bx = x0; bx <= x1; ++bx) {
+        const size_t bucket = static_cast<size_t>(by) * buckets_x_ + bx;
+        for (int32_t j = bucket_start_[bucket]; j < bucket_start_[bucket + 1]; ++j) {
+          const int32_t k = bucket_items_[j];
+          if (seen_stamp_[k] == stamp_) continue;
+          if (!BoxesOverlap(smin, smax, grown_min_[k], grown_max_[k])) continue;
+          const double distance =
+              k < circles ? SegmentCircleDistance(a, b, world_->circles()[k])
+                          : SegmentPolygonDistance(a, b, world_->polygons()[k - circles].vertices);
+          if (distance < threshold_) {
+            seen_stamp_[k] = stamp_;
+            ++count;
+          }
+        }
       }
     }
   }
@@ -146,10 +203,7 @@ int ObstacleProximity::CountOnWorld(const Path& path) const {
 
 int ObstacleProximity::CountOnGrid(const Path& path) {
   if (path.empty()) return 0;
-  if (++stamp_ == 0) {  // wrapped: forget every mark
-    std::fill(seen_stamp_.begin(), seen_stamp_.end(), 0);
-    stamp_ = 1;
-  }
+  NextStamp();
   int count = 0;
   bool outside = false;
   const double res = grid_->resolution();
@@ -157,8 +211,8 @@ int ObstacleProximity::CountOnGrid(const Path& path) {
   const Point2 origin = grid_->origin();
   const int w = grid_->width(), h = grid_->height();
   auto visit = [&](const Point2& p) {
-    const int cx = static_cast<int>(std::floor((p.x() - origin.x()) * inv_res));
-    const int cy = static_cast<int>(std::floor((p.y() - origin.y()) * inv_res));
+    const int cx = FloorToInt((p.x() - origin.x()) * inv_res);
+    const int cy = FloorToInt((p.y() - origin.y()) * inv_res);
     if (cx < 0 || cy < 0 || cx >= w || cy >= h) {
       outside = true;
       return;

@@ -15,7 +15,9 @@ namespace swarmplan {
 // grid's distance field) carries the label of the component reached first by a breadth-first
 // sweep from all blocked cells, computed once here; segments are walked at a quarter cell.
 // Leaving the map counts as one more obstacle. Built once per search; CountViolations reuses
-// its buffers (no allocation).
+// its buffers (no allocation). On a ShapeWorld a bucket grid over the bounds, built here, lists
+// per bucket the obstacles whose box grown by the threshold overlaps it, so each segment is
+// tested only against the obstacles near it.
 class ObstacleProximity {
  public:
   // FAILED_PRECONDITION on a terrain.
@@ -30,8 +32,12 @@ class ObstacleProximity {
 
  private:
   ObstacleProximity() = default;
-  int CountOnWorld(const Path& path) const;
+  int CountOnWorld(const Path& path);
   int CountOnGrid(const Path& path);
+  // A fresh stamp for seen_stamp_: marks from earlier calls no longer count.
+  void NextStamp();
+  // The bucket range (clamped to the grid) covering the box [lo, hi].
+  void BucketRange(const Point2& lo, const Point2& hi, int& x0, int& x1, int& y0, int& y1) const;
 
   const ShapeWorld* world_ = nullptr;
   const OccupancyGrid* grid_ = nullptr;
@@ -39,10 +45,16 @@ class ObstacleProximity {
   Point2 lower_ = Point2::Zero();
   Point2 upper_ = Point2::Zero();
   int obstacle_count_ = 0;
-  // ShapeWorld: bounding boxes of the polygons.
-  std::vector<Point2> polygon_min_, polygon_max_;
+  // ShapeWorld: per obstacle (circles first, then polygons) its box grown by the threshold,
+  // and the bucket grid (compressed rows: bucket b lists bucket_items_[bucket_start_[b] ..
+  // bucket_start_[b + 1])).
+  std::vector<Point2> grown_min_, grown_max_;
+  double bucket_inv_size_ = 1.0;
+  int buckets_x_ = 0, buckets_y_ = 0;
+  std::vector<int32_t> bucket_start_, bucket_items_;
   // OccupancyGrid: per cell the violated component, or -1.
   std::vector<int32_t> label_;
+  // Per obstacle (or component): the stamp of the last call that counted it.
   std::vector<uint32_t> seen_stamp_;
   uint32_t stamp_ = 0;
 };

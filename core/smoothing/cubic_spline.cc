@@ -53,7 +53,7 @@ Point3 CubicSpline::Evaluate(double s) const {
   if (n == 0) return Point3::Zero();
   if (n == 1) return knots_[0];
   s = std::clamp(s, 0.0, static_cast<double>(n - 1));
-  const int i = std::min(static_cast<int>(std::floor(s)), n - 2);
+  const int i = std::min(static_cast<int>(s), n - 2);  // s >= 0: truncation is floor
   const double t = s - i;
   const double u = 1.0 - t;
   return u * knots_[i] + t * knots_[i + 1] +
