@@ -24,6 +24,12 @@ TEST(RngTest, KnownFirstDrawsAreFixedByTheEngineAndOurConversion) {
   EXPECT_EQ(reference(), 9981545732273789042ULL);
   Rng rng(5489);
   EXPECT_EQ(rng.NextU64(), 14514284786278117030ULL);
+  // The conversions: 53 high bits for Uniform, rejection sampling for UniformInt, the polar
+  // method for Normal (whose libm calls may differ in the last bits between platforms).
+  EXPECT_EQ(rng.Uniform(), 0.2504803406880286);
+  EXPECT_EQ(rng.UniformInt(0, 9), 0);
+  EXPECT_NEAR(rng.Normal(), -0.5670942549352187, 1e-12);
+  EXPECT_NEAR(rng.Normal(), -1.482959173844121, 1e-12);
 }
 
 TEST(RngTest, UniformStaysInRangeWithSensibleMean) {
