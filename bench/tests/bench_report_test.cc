@@ -35,6 +35,17 @@ TEST(BenchStatisticsTest, MaxOfValues) {
   EXPECT_FALSE(Max({}).has_value());
 }
 
+TEST(BenchStatisticsTest, MinMeanAndSampleStdDev) {
+  EXPECT_EQ(Min({3.0, -1.0, 2.0}), -1.0);
+  EXPECT_DOUBLE_EQ(*Mean({2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0}), 5.0);
+  // Sum of squared deviations 32 over n - 1 = 7.
+  EXPECT_DOUBLE_EQ(*StdDev({2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0}), std::sqrt(32.0 / 7.0));
+  EXPECT_EQ(StdDev({3.0}), 0.0);
+  EXPECT_FALSE(Min({}).has_value());
+  EXPECT_FALSE(Mean({}).has_value());
+  EXPECT_FALSE(StdDev({}).has_value());
+}
+
 TEST(BenchReportTest, LengthRatioNeedsSuccessAndOptimum) {
   EXPECT_DOUBLE_EQ(*LengthRatio(true, 12.0, 10.0), 1.2);
   EXPECT_FALSE(LengthRatio(false, 12.0, 10.0).has_value());

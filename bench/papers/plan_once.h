@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "absl/status/statusor.h"
+#include "core/map/map.h"
+#include "core/params.h"
+#include "core/run.h"
+
+namespace swarmplan::bench {
+
+// One planner configuration of a reproduction: the registered planner, its parameters (the
+// rest keep their defaults) and what RunPlan does around it.
+struct PlanSpec {
+  std::string algorithm;
+  ParamValues params;
+  std::string smoothing = "none";
+  int max_iterations = 0;  // 0: the planner's default
+  double clearance = 0.0;
+};
+
+// Plans once through RunPlan with the default registry, as the server would; the convergence
+// record is kept in the result.
+absl::StatusOr<PlanResult> PlanOnce(const PlanSpec& spec, const MapPtr& map, const Point3& start,
+                                    const Point3& goal, uint64_t seed);
+
+}  // namespace swarmplan::bench

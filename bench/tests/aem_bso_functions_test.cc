@@ -1,0 +1,148 @@
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "bench/papers/aem_bso_test_functions.h"
+#include "core/algorithms/bso/swarm_options.h"
+#include "core/planner.h"
+#include "core/random.h"
+#include "core/registry.h"
+#include "core/stop_token.h"
+#include "gtest/gtest.h"
+
+namespace swarmplan::bench {
+namespace {
+
+using std::numbers::pi;
+
+Eigen::VectorXd Vec(std::initializer_list<double> values) {
+  Eigen::VectorXd x(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index i = 0;
+  for (double v : values) x[i++] = v;
+  return x;
+}
+
+const TestFunction& Function(const std::string& id) {
+  for (const TestFunction& function : AemBsoTestFunctions()) {
+    if (function.id == id) return function;
+  }
+  ADD_FAILURE() << "no " << id;
+  return AemBsoTestFunctions().front();
+}
+
+TEST(AemBsoTestFunctionsTest, TenFunctionsWithThePapersRanges) {
+  const std::vector<TestFunction>& functions = AemBsoTestFunctions();
+  ASSERT_EQ(functions.size(), 10u);
+  const double ranges[10] = {100, 100, 50, 100, 10, 100, 5.2, 600, 32, 50};
+  for (size_t i = 0; i < functions.size(); ++i) {
+    EXPECT_EQ(functions[i].id, "f" + std::to_string(i + 1));
+    EXPECT_EQ(functions[i].upper, ranges[i]) << functions[i].id;
+    EXPECT_EQ(functions[i].lower, -ranges[i]) << functions[i].id;
+    EXPECT_EQ(functions[i].unimodal, i < 6) << functions[i].id;
+  }
+}
+
+TEST(AemBsoTestFunctionsTest, KnownMinimiserGivesKnownMinimum) {
+  for (const TestFunction& function : AemBsoTestFunctions()) {
+    for (int dim : {2, 30, 60}) {
+      EXPECT_NEAR(function.value(function.Minimiser(dim)), function.minimum, 1e-12)
+          << function.id << " D = " << dim;
+    }
+  }
+}
+
+TEST(AemBsoTestFunctionsTest, NoPointBelowTheKnownMinimum) {
+  Rng rng(7);
+  for (const TestFunction& function : AemBsoTestFunctions()) {
+    for (int k = 0; k < 200; ++k) {
+      Eigen::VectorXd x(30);
+      for (double& xi : x) xi = rng.Uniform(function.lower, function.upper) * rng.Uniform();
+      EXPECT_GE(function.value(x), function.minimum - 1e-9) << function.id;
+    }
+  }
+}
+
+TEST(AemBsoTestFunctionsTest, HandComputedPoints) {
+  EXPECT_DOUBLE_EQ(Sphere(Vec({1, 2, 3})), 14.0);
+  // floor(0.9) = 0, floor(-0.1) = -1, floor(2.0) = 2.
+  EXPECT_DOUBLE_EQ(Step(Vec({0.4, -0.6, 1.5})), 5.0);
+  EXPECT_DOUBLE_EQ(Rosenbrock(Vec({0, 0, 0})), 2.0);
+  EXPECT_DOUBLE_EQ(Rosenbrock(Vec({1, 2})), 100.0);
+  // Prefix sums of squares 1, 5, 14.
+  EXPECT_DOUBLE_EQ(Quadric(Vec({1, 2, 3})), 20.0);
+  EXPECT_DOUBLE_EQ(SchwefelP222(Vec({1, -2, 3})), 6.0 + 6.0);
+  // Weights 1, 1e3, 1e6.
+  EXPECT_NEAR(Elliptic(Vec({1, 1, 1})), 1001001.0, 1e-6);
+  EXPECT_NEAR(Elliptic(Vec({0, 2, 0})), 4000.0, 1e-9);
+  // 1 - 10 cos(2 pi) + 10 = 1 and 0.25 - 10 cos(pi) + 10 = 20.25.
+  EXPECT_NEAR(Rastrigin(Vec({1, 0.5})), 21.25, 1e-12);
+  // cos(pi / 2) = 0 zeroes the product.
+  EXPECT_NEAR(Griewank(Vec({pi / 2, 0})), pi * pi / 16000.0 + 1.0, 1e-12);
+  // sqrt(mean x^2) = 1 and mean cos(2 pi x) = 1.
+  EXPECT_NEAR(Ackley(Vec({1, 1})), 20.0 * (1.0 - std::exp(-0.2)), 1e-12);
+  // 1 + 0 - 0.3 cos(3 pi) - 0.4 cos(4 pi) + 0.7.
+  EXPECT_NEAR(Bohachevsky(Vec({1, 0})), 1.6, 1e-12);
+}
+
+TEST(AemBsoTestFunctionsTest, ObjectiveIsTheFunctionOverItsBox) {
+  const TestFunction& rastrigin = Function("f7");
+  TestFunctionObjective objective(rastrigin, 3);
+  EXPECT_EQ(objective.dim(), 3);
+  EXPECT_EQ(objective.lower(), Eigen::VectorXd::Constant(3, -5.2));
+  EXPECT_EQ(objective.upper(), Eigen::VectorXd::Constant(3, 5.2));
+  const Evaluation e = objective.Evaluate(Vec({1, 0.5, 0}));
+  EXPECT_NEAR(e.fitness, 21.25, 1e-12);
+  EXPECT_TRUE(e.feasible);
+}
+
+TEST(AemBsoTestFunctionsTest, ShiftMovesTheMinimiser) {
+  const TestFunction& sphere = Function("f1");
+  TestFunctionObjective objective(sphere, 2, Vec({20, -20}));
+  EXPECT_DOUBLE_EQ(objective.Evaluate(Vec({20, -20})).fitness, 0.0);
+  EXPECT_DOUBLE_EQ(objective.Evaluate(Vec({0, 0})).fitness, 800.0);
+}
+
+TEST(AemBsoTestFunctionsTest, CheckOptimiserResultAcceptsOnlyRealResults) {
+  const TestFunction& sphere = Function("f1");
+  TestFunctionObjective objective(sphere, 2);
+  EXPECT_TRUE(CheckOptimiserResult(sphere, objective, Vec({1, 2}), 5.0).ok());
+  EXPECT_TRUE(CheckOptimiserResult(sphere, objective, Vec({0, 0}), 0.0).ok());
+  EXPECT_FALSE(CheckOptimiserResult(sphere, objective, Vec({1, 2}), 4.0).ok());
+  EXPECT_FALSE(CheckOptimiserResult(sphere, objective, Vec({0, 0}), -1e-6).ok());
+  EXPECT_FALSE(
+      CheckOptimiserResult(sphere, objective, Vec({0, 0}), std::numeric_limits<double>::quiet_NaN())
+          .ok());
+  EXPECT_FALSE(CheckOptimiserResult(sphere, objective, Vec({101, 0}), 10201.0).ok());
+  const TestFunction& ackley = Function("f9");
+  TestFunctionObjective ackley_objective(ackley, 2);
+  // Rounding may leave Ackley a few ulps below 0 at the origin (the paper reports -4.44e-16).
+  EXPECT_TRUE(
+      CheckOptimiserResult(ackley, ackley_objective, Vec({0, 0}), ackley.value(Vec({0, 0}))).ok());
+}
+
+// The experiment runs the planners' own optimisers; each must improve on the sphere.
+TEST(AemBsoSwarmOptimiserTest, EveryPlannerOptimiserMinimisesTheSphere) {
+  const TestFunction& sphere = Function("f1");
+  for (const char* id : {"aem-bso", "aem-bso-linear", "bso", "pso", "ba"}) {
+    const PlannerInfo* info = DefaultRegistry().Find(id);
+    ASSERT_NE(info, nullptr) << id;
+    absl::StatusOr<ParamSet> params =
+        ParamSet::Resolve(info->params, ParamValues{{"population", int64_t{20}}});
+    ASSERT_TRUE(params.ok()) << params.status();
+    absl::StatusOr<SwarmOptimiser> optimiser = SwarmOptimiserFor(id, *params);
+    ASSERT_TRUE(optimiser.ok()) << optimiser.status();
+    TestFunctionObjective objective(sphere, 5);
+    Rng rng(3);
+    NullObserver observer;
+    const SearchOutcome outcome = (*optimiser)(objective, 50, rng, StopToken(), observer);
+    EXPECT_EQ(outcome.iterations, 50) << id;
+    EXPECT_TRUE(CheckOptimiserResult(sphere, objective, outcome.best_x, outcome.best_fitness).ok())
+        << id;
+    // A random point of the box has expected value 5 * 100^2 / 3 ~ 16667.
+    EXPECT_LT(outcome.best_fitness, 2000.0) << id;
+  }
+  EXPECT_FALSE(SwarmOptimiserFor("astar", ParamSet()).ok());
+}
+
+}  // namespace
+}  // namespace swarmplan::bench
