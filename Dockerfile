@@ -8,7 +8,7 @@
 FROM debian:bookworm-slim AS build
 WORKDIR /src
 COPY scripts/install-deps scripts/install-deps
-RUN scripts/install-deps && apt-get clean && rm -rf /var/lib/apt/lists/*
+RUN scripts/install-deps --build-only && apt-get clean && rm -rf /var/lib/apt/lists/*
 COPY . .
 RUN cmake -S . -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSWARMPLAN_WERROR=ON \
       -DSWARMPLAN_BUILD_BENCH=OFF -DSWARMPLAN_SHARED_DIR=/nonexistent \
