@@ -280,11 +280,10 @@ FishSwarmParams FishSwarmParams::From(const ParamSet& set) {
   return p;
 }
 
-absl::StatusOr<SearchResult> FishSwarmPlanner::Solve(const Problem& problem, const StopToken& stop,
-                                                     Observer& observer) {
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
-  if (!space.ok()) return space.status();
-  FishSwarmSearch search(params_, problem, *space);
+absl::StatusOr<SearchResult> RunGridSearch(const FishSwarmParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer) {
+  FishSwarmSearch search(params, problem, space);
   return search.Run(stop, observer);
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/grid_ops/grid_moves.h"
+#include "core/grid_ops/grid_planner.h"
 #include "core/params.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -45,15 +46,10 @@ struct FishSwarmParams {
   static FishSwarmParams From(const ParamSet& set);
 };
 
-class FishSwarmPlanner final : public Planner {
- public:
-  explicit FishSwarmPlanner(FishSwarmParams params) : params_(params) {}
-  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
-                                     Observer& observer) override;
-
- private:
-  FishSwarmParams params_;
-};
+absl::StatusOr<SearchResult> RunGridSearch(const FishSwarmParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer);
+using FishSwarmPlanner = GridPlanner<FishSwarmParams>;
 
 PlannerInfo AfsaInfo();
 PlannerInfo DafsaInfo();

@@ -152,11 +152,10 @@ GridAcoParams GridAcoParams::From(const ParamSet& set) {
   return p;
 }
 
-absl::StatusOr<SearchResult> GridAcoPlanner::Solve(const Problem& problem, const StopToken& stop,
-                                                   Observer& observer) {
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
-  if (!space.ok()) return space.status();
-  GridAcoSearch search(params_, problem, *space);
+absl::StatusOr<SearchResult> RunGridSearch(const GridAcoParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer) {
+  GridAcoSearch search(params, problem, space);
   return search.Run(stop, observer);
 }
 

@@ -124,11 +124,10 @@ GridApfParams GridApfParams::From(const ParamSet& set) {
   return p;
 }
 
-absl::StatusOr<SearchResult> GridApfPlanner::Solve(const Problem& problem, const StopToken& stop,
-                                                   Observer& observer) {
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
-  if (!space.ok()) return space.status();
-  GridApfSearch search(params_, problem, *space);
+absl::StatusOr<SearchResult> RunGridSearch(const GridApfParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer) {
+  GridApfSearch search(params, problem, space);
   return search.Run(stop, observer);
 }
 

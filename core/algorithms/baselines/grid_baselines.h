@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "core/grid_ops/grid_planner.h"
 #include "core/params.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -29,15 +30,10 @@ struct GridGaParams {
   static GridGaParams From(const ParamSet& set);
 };
 
-class GridGaPlanner final : public Planner {
- public:
-  explicit GridGaPlanner(GridGaParams params) : params_(params) {}
-  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
-                                     Observer& observer) override;
-
- private:
-  GridGaParams params_;
-};
+absl::StatusOr<SearchResult> RunGridSearch(const GridGaParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer);
+using GridGaPlanner = GridPlanner<GridGaParams>;
 
 // Ant colony on the grid: each ant walks from the start without revisiting cells, choosing the
 // next cell with probability ∝ τ^α η^β, η = 1 / distance to the goal; ants that get stuck die.
@@ -57,15 +53,10 @@ struct GridAcoParams {
   static GridAcoParams From(const ParamSet& set);
 };
 
-class GridAcoPlanner final : public Planner {
- public:
-  explicit GridAcoPlanner(GridAcoParams params) : params_(params) {}
-  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
-                                     Observer& observer) override;
-
- private:
-  GridAcoParams params_;
-};
+absl::StatusOr<SearchResult> RunGridSearch(const GridAcoParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer);
+using GridAcoPlanner = GridPlanner<GridAcoParams>;
 
 // Artificial potential field: steepest descent over the 8 neighbours of
 // U = ½ k_att d² + ½ k_rep (1/ρ − 1/ρ0)² (ρ < ρ0; d the distance to the goal, ρ the clearance,
@@ -83,15 +74,10 @@ struct GridApfParams {
   static GridApfParams From(const ParamSet& set);
 };
 
-class GridApfPlanner final : public Planner {
- public:
-  explicit GridApfPlanner(GridApfParams params) : params_(params) {}
-  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
-                                     Observer& observer) override;
-
- private:
-  GridApfParams params_;
-};
+absl::StatusOr<SearchResult> RunGridSearch(const GridApfParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer);
+using GridApfPlanner = GridPlanner<GridApfParams>;
 
 PlannerInfo GridGaInfo();
 PlannerInfo GridAcoInfo();

@@ -178,11 +178,10 @@ GridGaParams GridGaParams::From(const ParamSet& set) {
   return p;
 }
 
-absl::StatusOr<SearchResult> GridGaPlanner::Solve(const Problem& problem, const StopToken& stop,
-                                                  Observer& observer) {
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
-  if (!space.ok()) return space.status();
-  GridGaSearch search(params_, problem, *space);
+absl::StatusOr<SearchResult> RunGridSearch(const GridGaParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer) {
+  GridGaSearch search(params, problem, space);
   return search.Run(stop, observer);
 }
 

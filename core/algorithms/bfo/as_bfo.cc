@@ -225,11 +225,10 @@ AsBfoParams AsBfoParams::From(const ParamSet& set) {
   return p;
 }
 
-absl::StatusOr<SearchResult> AsBfoPlanner::Solve(const Problem& problem, const StopToken& stop,
-                                                 Observer& observer) {
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, params_.resolution);
-  if (!space.ok()) return space.status();
-  AsBfoSearch search(params_, problem, *space);
+absl::StatusOr<SearchResult> RunGridSearch(const AsBfoParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer) {
+  AsBfoSearch search(params, problem, space);
   return search.Run(stop, observer);
 }
 

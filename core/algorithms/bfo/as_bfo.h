@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "core/grid_ops/grid_planner.h"
 #include "core/params.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -30,15 +31,10 @@ struct AsBfoParams {
   static AsBfoParams From(const ParamSet& set);
 };
 
-class AsBfoPlanner final : public Planner {
- public:
-  explicit AsBfoPlanner(AsBfoParams params) : params_(params) {}
-  absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
-                                     Observer& observer) override;
-
- private:
-  AsBfoParams params_;
-};
+absl::StatusOr<SearchResult> RunGridSearch(const AsBfoParams& params, const Problem& problem,
+                                           const GridSpace& space, const StopToken& stop,
+                                           Observer& observer);
+using AsBfoPlanner = GridPlanner<AsBfoParams>;
 
 PlannerInfo AsBfoInfo();
 
