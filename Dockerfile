@@ -31,7 +31,8 @@ COPY --from=build /out/ /
 
 USER swarmplan
 VOLUME /data
-ENV SWARMPLAN_LISTEN=0.0.0.0:50051 \
+ENV PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    SWARMPLAN_LISTEN=0.0.0.0:50051 \
     SWARMPLAN_METRICS_ADDRESS=0.0.0.0 \
     SWARMPLAN_METRICS_PORT=9464 \
     SWARMPLAN_DATA_DIR=/data \
@@ -39,8 +40,8 @@ ENV SWARMPLAN_LISTEN=0.0.0.0:50051 \
     SWARMPLAN_SERVER=127.0.0.1:50051
 EXPOSE 50051 9464
 HEALTHCHECK --interval=10s --timeout=3s --start-period=5s --retries=3 \
-  CMD ["swarmplan", "health", "--timeout", "2"]
+  CMD ["/usr/local/bin/swarmplan", "health", "--timeout", "2"]
 # SIGTERM starts a graceful shutdown: running jobs get SWARMPLAN_SHUTDOWN_GRACE to finish and
 # are re-queued in the store otherwise. `docker stop -t 30` leaves room for that.
 STOPSIGNAL SIGTERM
-ENTRYPOINT ["swarmplan-server"]
+ENTRYPOINT ["/usr/local/bin/swarmplan-server"]
