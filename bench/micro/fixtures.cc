@@ -1,7 +1,5 @@
 #include "bench/micro/fixtures.h"
 
-#include <cstdlib>
-#include <iostream>
 #include <map>
 #include <memory>
 
@@ -9,19 +7,6 @@
 #include "core/random.h"
 
 namespace swarmplan::bench {
-namespace {
-
-// The benchmarks cannot run without their maps: fail loudly.
-template <typename T>
-T ValueOrDie(absl::StatusOr<T> value) {
-  if (!value.ok()) {
-    std::cerr << "micro-benchmark fixture: " << value.status() << "\n";
-    std::abort();
-  }
-  return *std::move(value);
-}
-
-}  // namespace
 
 const Map& RandomGridMap(int size) {
   static auto* const maps = new std::map<int, std::unique_ptr<const Map>>();

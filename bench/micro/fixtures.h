@@ -1,13 +1,26 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
+#include <iostream>
 #include <utility>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "core/geometry/collision.h"
 #include "core/map/map.h"
 
 namespace swarmplan::bench {
+
+// A benchmark cannot run without its fixture: the value, or a message and abort.
+template <typename T>
+T ValueOrDie(absl::StatusOr<T> value) {
+  if (!value.ok()) {
+    std::cerr << "micro-benchmark fixture: " << value.status() << "\n";
+    std::abort();
+  }
+  return *std::move(value);
+}
 
 // Maps shared by the micro-benchmarks (core/map/generate.h, seed 1), built once per process.
 

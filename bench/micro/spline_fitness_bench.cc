@@ -7,11 +7,10 @@
 // (band 30), like a swarm's positions, and cycled.
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <iostream>
 #include <memory>
 #include <vector>
 
+#include "bench/micro/fixtures.h"
 #include "core/geometry/rasterize.h"
 #include "core/map/generate.h"
 #include "core/operators/obstacle_proximity.h"
@@ -25,25 +24,16 @@ namespace {
 constexpr int kVectors = 1024;
 constexpr double kSafeDistance = 1.5;
 
-template <typename T>
-T OrDie(absl::StatusOr<T> value) {
-  if (!value.ok()) {
-    std::cerr << "spline fitness benchmark: " << value.status() << "\n";
-    std::abort();
-  }
-  return *std::move(value);
-}
-
 const MapPtr& FitnessMap(int which) {
   static const std::vector<MapPtr>* const maps = [] {
     const Bounds2 bounds{Point2(0, 0), Point2(100, 100)};
     const std::vector<Point2> keep = {Point2(10, 10), Point2(90, 90)};
     auto* out = new std::vector<MapPtr>();
     out->push_back(
-        std::make_shared<const Map>(OrDie(RandomShapeWorld(bounds, 10, 5, 10, 1, keep, 3))));
-    ShapeWorld thirty = OrDie(RandomShapeWorld(bounds, 30, 3, 7, 1, keep, 3));
+        std::make_shared<const Map>(ValueOrDie(RandomShapeWorld(bounds, 10, 5, 10, 1, keep, 3))));
+    ShapeWorld thirty = ValueOrDie(RandomShapeWorld(bounds, 30, 3, 7, 1, keep, 3));
     out->push_back(std::make_shared<const Map>(thirty));
-    out->push_back(std::make_shared<const Map>(OrDie(RasterizeShapeWorld(thirty, 1.0))));
+    out->push_back(std::make_shared<const Map>(ValueOrDie(RasterizeShapeWorld(thirty, 1.0))));
     return out;
   }();
   return maps->at(which);
@@ -86,7 +76,7 @@ void SetLabels(benchmark::State& state) {
 // The whole fitness, as the planners call it.
 void BM_SplineFitness(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
-  auto objective = OrDie(
+  auto objective = ValueOrDie(
       WaypointObjective::Create(FitnessProblem(which), Options(static_cast<int>(state.range(1)))));
   const std::vector<Eigen::VectorXd> xs = DecisionVectors(*objective);
   size_t i = 0;
@@ -106,7 +96,7 @@ void BM_SplineFitness(benchmark::State& state) {
 void BM_SplineBuild(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
   const int k = static_cast<int>(state.range(1));
-  auto objective = OrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
+  auto objective = ValueOrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
   const std::vector<Eigen::VectorXd> xs = DecisionVectors(*objective);
   const Problem problem = FitnessProblem(which);
   WaypointPathBuilder builder(problem.start, problem.goal, k, Interpolation::kSpline, 100);
@@ -124,7 +114,7 @@ void BM_SplineBuild(benchmark::State& state) {
 void BM_SampledLength(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
   const int k = static_cast<int>(state.range(1));
-  auto objective = OrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
+  auto objective = ValueOrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
   const std::vector<Path> paths = DecodedPaths(*objective);
   size_t i = 0;
   for (auto _ : state) {
@@ -143,9 +133,10 @@ void BM_SampledLength(benchmark::State& state) {
 void BM_ClearanceCount(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
   const int k = static_cast<int>(state.range(1));
-  auto objective = OrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
+  auto objective = ValueOrDie(WaypointObjective::Create(FitnessProblem(which), Options(k)));
   const std::vector<Path> paths = DecodedPaths(*objective);
-  ObstacleProximity proximity = OrDie(ObstacleProximity::Create(*FitnessMap(which), kSafeDistance));
+  ObstacleProximity proximity =
+      ValueOrDie(ObstacleProximity::Create(*FitnessMap(which), kSafeDistance));
   size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(proximity.CountViolations(paths[i]));

@@ -38,7 +38,6 @@ constexpr int kQuickIterations = 20;
 constexpr int kPopulation = 100;
 constexpr double kPenalty = 100.0;
 constexpr double kPaperFactor = 1.49;  // c1 = c2 (= c3) of every swarm in the paper
-constexpr double kEndpointTolerance = 1e-9;
 
 const std::vector<std::string>& Planners() {
   static const std::vector<std::string>* const planners =
@@ -100,20 +99,6 @@ struct CellStats {
   std::vector<double> best_iterations;
 };
 
-absl::Status CheckPath(const PlanResult& result, const Point2& start, const Point2& goal,
-                       const std::string& what) {
-  if (!result.found) return absl::OkStatus();
-  const Path& path = result.raw_path;
-  if (!result.raw_metrics.collision_free) {
-    return absl::InternalError(absl::StrCat(what, ": the reported path is not collision-free"));
-  }
-  if (path.empty() || (path.front().head<2>() - start).norm() > kEndpointTolerance ||
-      (path.back().head<2>() - goal).norm() > kEndpointTolerance) {
-    return absl::InternalError(absl::StrCat(what, ": the path does not run from start to goal"));
-  }
-  return absl::OkStatus();
-}
-
 struct WorldRun {
   AemBsoWorldSpec spec;
   double optimum = 0.0;
@@ -140,8 +125,7 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
   if (!optimum->found) {
     return absl::FailedPreconditionError(absl::StrCat(path, ": no path keeps d_safe"));
   }
-  if (absl::Status s = CheckPath(*optimum, AemBsoStart(), AemBsoGoal(), "visibility-graph");
-      !s.ok()) {
+  if (absl::Status s = CheckFoundPath(*optimum, start, goal, "visibility-graph"); !s.ok()) {
     return s;
   }
   out.optimum = optimum->raw_metrics.length;
@@ -168,7 +152,7 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
         if (!result.ok()) return result.status();
         const std::string what =
             absl::StrCat(spec.name, " ", planner, "/", interpolation, " seed ", seed);
-        if (absl::Status s = CheckPath(*result, AemBsoStart(), AemBsoGoal(), what); !s.ok()) {
+        if (absl::Status s = CheckFoundPath(*result, start, goal, what); !s.ok()) {
           return s;
         }
         ++cell.runs;

@@ -127,8 +127,6 @@ PlanSpec Spec(const std::string& algorithm, ParamValues params) {
   return spec;
 }
 
-bool SamePoint(const Point3& a, const Point3& b) { return (a - b).norm() < 1e-9; }
-
 absl::Status RunRow(const Row& row, const MapPtr& map, const Point3& start, const Point3& goal,
                     const ExperimentOptions& options, int runs, RowStats& stats) {
   const CanyonShape shape;
@@ -142,14 +140,13 @@ absl::Status RunRow(const Row& row, const MapPtr& map, const Point3& start, cons
     }
     ++stats.runs;
     stats.seconds.push_back(absl::ToDoubleSeconds(result->wall_time));
+    if (absl::Status s = CheckFoundPath(*result, start, goal,
+                                        absl::StrCat("bas-canyon: ", row.label, " seed ", seed));
+        !s.ok()) {
+      return s;
+    }
     if (!result->found) continue;
     const Path& path = result->raw_path;
-    if (path.empty() || !SamePoint(path.front(), start) || !SamePoint(path.back(), goal) ||
-        !result->raw_metrics.collision_free) {
-      return absl::InternalError(absl::StrCat("bas-canyon: ", row.label, " seed ", seed,
-                                              " reported a path that does not run from start "
-                                              "to goal above the terrain"));
-    }
     stats.fitness.push_back(result->fitness);
     stats.length.push_back(result->raw_metrics.length);
     stats.best_iteration.push_back(result->best_iteration);

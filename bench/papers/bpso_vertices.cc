@@ -104,24 +104,20 @@ struct Runs {
 // A found path must be collision-free, run from start to goal and be no shorter than the exact
 // optimum; anything else is a bug and fails the experiment.
 absl::Status CheckPath(const PlanResult& result, const World& world, const std::string& label) {
-  const Path& path = result.raw_path;
-  const auto near = [](const Point3& a, const Point2& b) {
-    return std::hypot(a.x() - b.x(), a.y() - b.y()) <= 1e-6;
-  };
-  std::string problem;
-  if (!result.raw_metrics.collision_free) {
-    problem = "is not collision-free";
-  } else if (path.size() < 2 || !near(path.front(), BpsoVerticesStart()) ||
-             !near(path.back(), BpsoVerticesGoal())) {
-    problem = "does not run from start to goal";
-  } else if (result.raw_metrics.length < world.optimum - 1e-6) {
-    problem = absl::StrFormat("is shorter (%.9g) than the visibility-graph optimum (%.9g)",
-                              result.raw_metrics.length, world.optimum);
+  const std::string what =
+      absl::StrFormat("bpso-vertices: %s on %s (seed %d)", label, WorldFileName(world.vertices),
+                      static_cast<int64_t>(result.seed));
+  if (absl::Status s =
+          CheckFoundPath(result, At(BpsoVerticesStart()), At(BpsoVerticesGoal()), what, 1e-6);
+      !s.ok()) {
+    return s;
   }
-  if (problem.empty()) return absl::OkStatus();
-  return absl::InternalError(absl::StrFormat("bpso-vertices: %s on %s (seed %d): the path %s",
-                                             label, WorldFileName(world.vertices),
-                                             static_cast<int64_t>(result.seed), problem));
+  if (result.found && result.raw_metrics.length < world.optimum - 1e-6) {
+    return absl::InternalError(
+        absl::StrFormat("%s: the path is shorter (%.9g) than the visibility-graph optimum (%.9g)",
+                        what, result.raw_metrics.length, world.optimum));
+  }
+  return absl::OkStatus();
 }
 
 absl::StatusOr<Runs> RunMany(const PlanSpec& spec, const World& world, int count,

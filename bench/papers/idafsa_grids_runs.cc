@@ -18,20 +18,6 @@ Point3 CellPoint(const OccupancyGrid& grid, Cell c) {
   return Point3(p.x(), p.y(), 0.0);
 }
 
-// A found path must keep off obstacles and end at start and goal: anything else is a bug.
-absl::Status CheckFoundPath(const std::string& what, const PlanResult& plan, const Point3& start,
-                            const Point3& goal) {
-  if (!plan.raw_metrics.collision_free) {
-    return absl::InternalError(absl::StrCat(what, ": a found path is not collision-free"));
-  }
-  const Path& path = plan.raw_path;
-  if (path.size() < 2 || (path.front() - start).norm() > 1e-9 ||
-      (path.back() - goal).norm() > 1e-9) {
-    return absl::InternalError(absl::StrCat(what, ": the path does not run from start to goal"));
-  }
-  return absl::OkStatus();
-}
-
 absl::Status Prefixed(const std::string& what, const absl::Status& status) {
   return absl::Status(status.code(), absl::StrCat(what, ": ", status.message()));
 }
@@ -81,7 +67,7 @@ absl::StatusOr<FishRunStats> RunFishConfig(const FishConfig& config, const Idafs
       }
       continue;
     }
-    if (absl::Status s = CheckFoundPath(what, *plan, start, goal); !s.ok()) return s;
+    if (absl::Status s = CheckFoundPath(*plan, start, goal, what); !s.ok()) return s;
     stats.lengths.push_back(plan->raw_metrics.length);
     stats.turning_points.push_back(plan->raw_metrics.turning_points);
     stats.best_iterations.push_back(plan->best_iteration);
@@ -113,7 +99,7 @@ absl::StatusOr<PlanResult> RunReference(const std::string& algorithm, const Idaf
   absl::StatusOr<PlanResult> plan = PlanOnce(spec, map, start, goal, 1);
   if (!plan.ok()) return Prefixed(what, plan.status());
   if (!plan->found) return absl::InternalError(absl::StrCat(what, ": no path on a connected grid"));
-  if (absl::Status s = CheckFoundPath(what, *plan, start, goal); !s.ok()) return s;
+  if (absl::Status s = CheckFoundPath(*plan, start, goal, what); !s.ok()) return s;
   return plan;
 }
 

@@ -25,4 +25,10 @@ struct PlanSpec {
 absl::StatusOr<PlanResult> PlanOnce(const PlanSpec& spec, const MapPtr& map, const Point3& start,
                                     const Point3& goal, uint64_t seed);
 
+// The check every experiment makes on every plan: OK when no path was found, or when the found
+// path is collision-free (RunPlan's exact check) and runs from `start` to `goal` (within
+// `tolerance`). Anything else is a planner bug: INTERNAL, prefixed with `what`.
+absl::Status CheckFoundPath(const PlanResult& result, const Point3& start, const Point3& goal,
+                            const std::string& what, double tolerance = 1e-9);
+
 }  // namespace swarmplan::bench

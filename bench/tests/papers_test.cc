@@ -7,6 +7,7 @@
 
 #include "bench/papers/experiment.h"
 #include "bench/papers/markdown_table.h"
+#include "bench/papers/plan_once.h"
 #include "gtest/gtest.h"
 
 namespace swarmplan::bench {
@@ -40,6 +41,31 @@ TEST(MarkdownTableTest, NumberCellsKeepSignificantDigits) {
   EXPECT_EQ(NumberCell(2.5e-7), "2.500e-07");
   EXPECT_EQ(NumberCell(std::nullopt), "–");
   EXPECT_EQ(PercentCell(0.95), "95%");
+}
+
+TEST(CheckFoundPathTest, AcceptsNoPathAndValidPathsRejectsCollisionsAndWrongEnds) {
+  const Point3 start(1, 1, 0), goal(5, 1, 0);
+  PlanResult result;
+  result.found = false;
+  EXPECT_TRUE(CheckFoundPath(result, start, goal, "none").ok());
+
+  result.found = true;
+  result.raw_path = {start, Point3(3, 2, 0), goal};
+  result.raw_metrics.collision_free = true;
+  EXPECT_TRUE(CheckFoundPath(result, start, goal, "ok").ok());
+
+  result.raw_metrics.collision_free = false;
+  const absl::Status collision = CheckFoundPath(result, start, goal, "bso seed 3");
+  EXPECT_EQ(collision.code(), absl::StatusCode::kInternal);
+  EXPECT_NE(collision.message().find("bso seed 3: the found path is not collision-free"),
+            std::string::npos);
+
+  result.raw_metrics.collision_free = true;
+  result.raw_path.back() = Point3(5, 1.001, 0);
+  EXPECT_EQ(CheckFoundPath(result, start, goal, "ends").code(), absl::StatusCode::kInternal);
+  EXPECT_TRUE(CheckFoundPath(result, start, goal, "loose", 0.01).ok());
+  result.raw_path = {start};
+  EXPECT_EQ(CheckFoundPath(result, start, goal, "short").code(), absl::StatusCode::kInternal);
 }
 
 TEST(PapersTest, ExperimentNamesAreUniqueAndFindable) {
