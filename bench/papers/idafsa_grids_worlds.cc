@@ -1,7 +1,7 @@
 #include "bench/papers/idafsa_grids_worlds.h"
 
+#include <algorithm>
 #include <cmath>
-#include <deque>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -9,6 +9,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "core/grid_ops/cell_path.h"
 #include "core/map/generate.h"
 
 namespace swarmplan::bench {
@@ -50,23 +51,10 @@ absl::StatusOr<OccupancyGrid> GenerateIdafsaGrid(const IdafsaGridWorld& world) {
 }
 
 bool FourConnected(const OccupancyGrid& grid, Cell a, Cell b) {
-  if (grid.IsBlocked(a) || grid.IsBlocked(b)) return false;
-  std::vector<uint8_t> seen(static_cast<size_t>(grid.width()) * grid.height(), 0);
-  const auto index = [&](Cell c) { return static_cast<size_t>(c.y) * grid.width() + c.x; };
-  std::deque<Cell> open = {a};
-  seen[index(a)] = 1;
-  while (!open.empty()) {
-    const Cell c = open.front();
-    open.pop_front();
-    if (c == b) return true;
-    for (const Cell& d : {Cell{1, 0}, Cell{-1, 0}, Cell{0, 1}, Cell{0, -1}}) {
-      const Cell n{c.x + d.x, c.y + d.y};
-      if (grid.IsBlocked(n) || seen[index(n)]) continue;
-      seen[index(n)] = 1;
-      open.push_back(n);
-    }
-  }
-  return false;
+  GridMoves moves(grid, MoveRules{Neighbourhood::k4, /*segment_check=*/true, 0.0});
+  if (!moves.Usable(a) || !moves.Usable(b)) return false;
+  const std::vector<Cell> reachable = ReachableCells(moves, a);
+  return std::find(reachable.begin(), reachable.end(), b) != reachable.end();
 }
 
 std::optional<double> MoveSetOptimum(const OccupancyGrid& grid, Neighbourhood neighbourhood,
