@@ -128,6 +128,9 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
                             ->check(CLI::PositiveNumber);
   app.add_option("--clearance", o.clearance, "Clearance from obstacles, world units")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--optimum-budget", o.optimum_budget_seconds,
+                 "Seconds per problem for its exact optimum, the `optimal` column (0: none)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--smoothing", o.smoothing, "Smoothing applied to every path")
       ->check(CLI::IsMember(SmoothingMethods()));
   app.add_option("--csv", o.csv_path, "CSV output file (default: stdout)");

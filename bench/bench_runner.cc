@@ -7,6 +7,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
+#include "core/optimum.h"
 #include "core/run.h"
 #include "core/stop_token.h"
 
@@ -51,7 +52,7 @@ absl::StatusOr<std::vector<BenchProblem>> ScenarioProblems(const std::string& ma
     const Point2 goal = grid->CellCenter(s.goal);
     p.start = Point3(start.x(), start.y(), 0.0);
     p.goal = Point3(goal.x(), goal.y(), 0.0);
-    p.optimal = s.optimal_length * grid->resolution();
+    p.scen_optimal = s.optimal_length * grid->resolution();
     problems.push_back(std::move(p));
   }
   return problems;
@@ -156,6 +157,26 @@ absl::StatusOr<PlannerParams> ResolvePlannerParams(const Registry& registry,
   return typed;
 }
 
+void AddOptima(const Registry& registry, absl::Duration budget, double clearance,
+               std::vector<BenchProblem>& problems, std::ostream& notes) {
+  for (BenchProblem& p : problems) {
+    Problem problem;
+    problem.map = p.map;
+    problem.start = p.start;
+    problem.goal = p.goal;
+    problem.clearance = clearance;
+    const Optimum optimum = ComputeOptimum(registry, problem, budget);
+    if (optimum.known) {
+      p.optimal = optimum.length;
+      continue;
+    }
+    p.optimal.reset();
+    p.optimum_note = optimum.reason;
+    notes << "note: " << p.map_name << " scenario " << p.scenario << ": no exact optimum ("
+          << optimum.planner << ": " << optimum.reason << ")\n";
+  }
+}
+
 RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const std::string& planner,
                   const ParamValues& params, uint64_t seed, const BenchOptions& options,
                   std::string* note) {
@@ -179,6 +200,7 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   record.planner = planner;
   record.seed = seed;
   record.optimal = problem.optimal;
+  record.scen_optimal = problem.scen_optimal;
 
   NullObserver observer;
   const absl::Time started = absl::Now();

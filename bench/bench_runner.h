@@ -23,11 +23,14 @@ struct BenchProblem {
   std::string scenario;  // label for the CSV
   Point3 start = Point3::Zero();
   Point3 goal = Point3::Zero();
-  std::optional<double> optimal;  // world units
+  std::optional<double> scen_optimal;  // the .scen file's 8-connected length, world units
+  // The exact optimum (core/optimum.h) and why it is unknown when it is; see AddOptima.
+  std::optional<double> optimal;
+  std::string optimum_note;
 };
 
 // The chosen scenarios of a .scen file as problems on `map` (a grid of the scenarios' size):
-// cells become world points at the cell centres, optimal lengths are scaled to world units.
+// cells become world points at the cell centres, the .scen lengths are scaled to world units.
 // INVALID_ARGUMENT naming the file when the map is not a grid or its size differs.
 absl::StatusOr<std::vector<BenchProblem>> ScenarioProblems(const std::string& map_name,
                                                            const MapPtr& map,
@@ -39,6 +42,11 @@ absl::StatusOr<std::vector<BenchProblem>> ScenarioProblems(const std::string& ma
 // .scen naming another map) go to `notes`.
 absl::StatusOr<std::vector<BenchProblem>> LoadProblems(const BenchOptions& options,
                                                        std::ostream& notes);
+
+// Fills each problem's exact optimum with the exact planner of its map kind, at most
+// `budget` per problem, with the options' clearance; notes say where it stays unknown.
+void AddOptima(const Registry& registry, absl::Duration budget, double clearance,
+               std::vector<BenchProblem>& problems, std::ostream& notes);
 
 // The planner ids to run on a map of `kind`: "all" expands to every planner supporting it;
 // named planners are kept even when they do not support it (their runs then fail and say why).

@@ -49,6 +49,9 @@ int Main(int argc, char** argv) {
     return kExitFailure;
   }
 
+  AddOptima(registry, absl::Seconds(options.optimum_budget_seconds), options.clearance, *problems,
+            std::cerr);
+
   std::ofstream csv_file;
   if (!options.csv_path.empty()) {
     csv_file.open(options.csv_path);

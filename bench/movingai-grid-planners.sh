@@ -130,13 +130,13 @@ for m in MAPS:
 print("## Default parameters, planner x map\n")
 table(by_planner_map(main), ["planner", "map"])
 
-print("\n## Default parameters, success by optimal length (cells), all maps\n")
+print("\n## Default parameters, success by the .scen file's octile length (cells), all maps\n")
 print("| planner | " + " | ".join(f"{a}–{b if b < 1e9 else '∞'}" for a, b in BANDS) + " |")
 print("|---|" + "---:|" * len(BANDS))
 for p in ORDER:
     cells = []
     for a, b in BANDS:
-        g = [r for r in main if r["planner"] == p and a <= float(r["optimal"]) < b]
+        g = [r for r in main if r["planner"] == p and a <= float(r["scen_optimal"]) < b]
         ok = sum(r["success"] == "true" for r in g)
         cells.append(f"{100 * ok / len(g):.0f}% ({len(g)})" if g else "–")
     print(f"| {p} | " + " | ".join(cells) + " |")

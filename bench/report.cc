@@ -48,8 +48,8 @@ std::string CsvField(const std::string& text) {
 }
 
 std::string CsvHeader() {
-  return "map,scenario,planner,seed,success,length,optimal,ratio,min_clearance,max_curvature,"
-         "iterations,evaluations,wall_seconds\n";
+  return "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
+         "max_curvature,iterations,evaluations,wall_seconds\n";
 }
 
 std::string CsvRow(const RunRecord& r) {
@@ -62,6 +62,7 @@ std::string CsvRow(const RunRecord& r) {
       FormatOptional(r.length),
       FormatOptional(r.optimal),
       FormatOptional(r.ratio),
+      FormatOptional(r.scen_optimal),
       FormatOptional(r.min_clearance),
       FormatOptional(r.max_curvature),
       absl::StrCat(r.iterations),

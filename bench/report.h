@@ -15,8 +15,9 @@ struct RunRecord {
   uint64_t seed = 0;
   bool success = false;  // a path was found and it is collision-free
   std::optional<double> length;
-  std::optional<double> optimal;  // known optimum (from the .scen file)
-  std::optional<double> ratio;    // length / optimal
+  std::optional<double> optimal;       // the exact optimum (core/optimum.h)
+  std::optional<double> ratio;         // length / optimal
+  std::optional<double> scen_optimal;  // the .scen file's 8-connected length
   std::optional<double> min_clearance;
   std::optional<double> max_curvature;
   int iterations = 0;

@@ -147,6 +147,17 @@ void PrintJob(const v1::Job& job) {
     const v1::PlanResult& result = job.result();
     rows.push_back({"found", result.found() ? "yes" : "no"});
     rows.push_back({"fitness", FormatNumber(result.fitness())});
+    if (result.has_optimum_length()) {
+      rows.push_back({"exact optimum", absl::StrCat(FormatNumber(result.optimum_length()), " (",
+                                                    result.optimum_planner(), ")")});
+      if (result.has_optimality_ratio()) {
+        rows.push_back(
+            {"optimality ratio", absl::StrCat(absl::StrFormat("%.4f", result.optimality_ratio()),
+                                              " (path length / exact optimum)")});
+      }
+    } else if (!result.optimum_note().empty()) {
+      rows.push_back({"exact optimum", absl::StrCat("unknown: ", result.optimum_note())});
+    }
     rows.push_back(
         {"iterations", absl::StrCat(result.iterations(), " (best at ", result.best_iteration(),
                                     "), ", result.evaluations(), " evaluations")});

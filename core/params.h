@@ -30,6 +30,9 @@ struct ParamSpec {
   std::string unit;                  // "cells", "iterations", "" for dimensionless
   std::string description;
   bool ours = false;  // default chosen by us, not given by the paper
+  // The parameter sizes a population (beetles, particles, bacteria, fish, ants, ...): servers
+  // cap it by their population limit without knowing the planner.
+  bool population_size = false;
 
   static ParamSpec Int(std::string name, int64_t def, std::optional<double> min,
                        std::optional<double> max, std::string unit, std::string description);
@@ -40,6 +43,10 @@ struct ParamSpec {
                         std::string description);
   ParamSpec& Ours() {
     ours = true;
+    return *this;
+  }
+  ParamSpec& PopulationSize() {
+    population_size = true;
     return *this;
   }
 };

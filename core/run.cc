@@ -129,4 +129,11 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
   return result;
 }
 
+void SetOptimum(Optimum optimum, PlanResult& result) {
+  result.optimum = std::move(optimum);
+  const PathMetrics& final_path =
+      result.smoothing_collision_free ? result.smoothed_metrics : result.raw_metrics;
+  result.optimality_ratio = result.found ? OptimalityRatio(final_path.length, result.optimum) : 0.0;
+}
+
 }  // namespace swarmplan

@@ -4,6 +4,7 @@
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
+#include "core/optimum.h"
 #include "core/path_metrics.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -39,6 +40,11 @@ struct PlanResult {
   uint64_t seed = 0;
   ParamValues resolved_params;
   std::vector<IterationStats> convergence;
+  // The exact optimum of the problem and the final path's length over it (the smoothed path,
+  // or the raw one when smoothing lost the clearance; 0 when the optimum is not known or no
+  // path was found). RunPlan leaves them empty: see SetOptimum.
+  Optimum optimum;
+  double optimality_ratio = 0.0;
 };
 
 // Checks the request (known algorithm, parameters, map kind, start and goal inside the map and
@@ -47,6 +53,9 @@ struct PlanResult {
 // NOT_FOUND (algorithm), FAILED_PRECONDITION (map kind, start or goal blocked or outside).
 absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,
                                    const StopToken& stop, Observer& observer);
+
+// Records the problem's exact optimum in a result and measures the final path against it.
+void SetOptimum(Optimum optimum, PlanResult& result);
 
 // The checks RunPlan makes before it plans, for callers that want to reject a request early.
 absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& request);

@@ -87,6 +87,8 @@ const std::vector<Setting>& Settings() {
        Duration(&ServerConfig::max_job_time, "max-job-time")},
       {"max-watchers-per-job", "concurrent streams on one job",
        Integer(&ServerConfig::max_watchers_per_job, "max-watchers-per-job", 1)},
+      {"optimum-budget", "time for each result's exact optimum (cached per query); 0: off",
+       Duration(&ServerConfig::optimum_budget, "optimum-budget")},
       {"token-file", "file holding the bearer token clients must send; empty: no auth",
        String(&ServerConfig::token_file)},
       {"tls-cert-file", "PEM certificate chain; with --tls-key-file enables TLS",

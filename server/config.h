@@ -27,6 +27,9 @@ struct ServerConfig {
   int max_iterations = 1000000;
   absl::Duration max_job_time = absl::Minutes(10);
   int max_watchers_per_job = 16;
+  // Wall time a worker spends on a job's exact optimum (PlanResult.optimum_length) after the
+  // plan; 0 disables it. Optima are cached per map, start, goal and clearance.
+  absl::Duration optimum_budget = absl::Seconds(2);
   // Security: bearer token from a file (empty: off); TLS from certificate and key files.
   std::string token_file;
   std::string tls_cert_file;

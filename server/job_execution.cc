@@ -90,6 +90,9 @@ void JobManager::Execute(const JobPtr& job) {
                               FromProto(progress.min_interval()));
   absl::StatusOr<PlanResult> result = RunPlan(registry_, job->plan, job->stop, publisher);
   publisher.Flush();
+  if (result.ok() && !job->stop.cancelled()) {
+    SetOptimum(optima_.Get(job->record.request().map_id(), job->plan.problem), *result);
+  }
 
   {
     absl::MutexLock lock(&job->mu);

@@ -16,19 +16,21 @@
 namespace swarmplan::server {
 namespace {
 
-// Parameter names that size a population; capped by --max-population.
-bool IsPopulationParameter(const std::string& name) {
-  static constexpr const char* kNames[] = {
-      "population", "population_size", "swarm_size", "particles",  "num_particles",
-      "beetles",    "bacteria",        "fish",       "school_size"};
-  for (const char* n : kNames) {
-    if (name == n) return true;
+// Exact optima kept for repeated queries (a few hundred bytes each).
+constexpr size_t kOptimumCacheEntries = 4096;
+
+// Whether the planner declares `name` as a population size (capped by --max-population).
+bool IsPopulationSize(const PlannerInfo* planner, const std::string& name) {
+  if (planner == nullptr) return false;
+  for (const ParamSpec& spec : planner->params) {
+    if (spec.name == name) return spec.population_size;
   }
   return false;
 }
 
-absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& params,
-                         const ServerConfig& config) {
+// `planner` is null for an unknown algorithm, which ValidatePlanRequest reports.
+absl::Status CheckLimits(const v1::PlanRequest& request, const PlannerInfo* planner,
+                         const ParamValues& params, const ServerConfig& config) {
   if (request.limits().max_iterations() < 0) {
     return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
   }
@@ -53,7 +55,7 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& para
     return absl::InvalidArgumentError("progress.min_interval: must not be negative");
   }
   for (const auto& [name, value] : params) {
-    if (!IsPopulationParameter(name)) continue;
+    if (!IsPopulationSize(planner, name)) continue;
     const int64_t* n = std::get_if<int64_t>(&value);
     if (n != nullptr && *n > config.max_population) {
       return absl::InvalidArgumentError(absl::StrCat("parameter '", name, "': ", *n,
@@ -68,7 +70,12 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& para
 
 JobManager::JobManager(const ServerConfig& config, const Registry& registry, MapCatalog& maps,
                        Store& store, Metrics& metrics)
-    : config_(config), registry_(registry), maps_(maps), store_(store), metrics_(metrics) {
+    : config_(config),
+      registry_(registry),
+      maps_(maps),
+      store_(store),
+      metrics_(metrics),
+      optima_(registry, config.optimum_budget, kOptimumCacheEntries) {
   const int workers =
       config.workers > 0 ? config.workers : std::max(1u, std::thread::hardware_concurrency());
   queue_ = std::make_unique<JobQueue>(workers, config.queue_capacity,
@@ -96,7 +103,10 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   }
   absl::StatusOr<ParamValues> params = FromProto(request.parameters());
   if (!params.ok()) return params.status();
-  if (absl::Status s = CheckLimits(request, *params, config_); !s.ok()) return s;
+  if (absl::Status s = CheckLimits(request, registry_.Find(request.algorithm()), *params, config_);
+      !s.ok()) {
+    return s;
+  }
 
   PlanRequest plan;
   plan.algorithm = request.algorithm();

@@ -15,6 +15,7 @@
 #include "server/job_queue.h"
 #include "server/map_catalog.h"
 #include "server/metrics.h"
+#include "server/optimum_cache.h"
 #include "server/store.h"
 
 namespace swarmplan::server {
@@ -77,6 +78,7 @@ class JobManager {
   MapCatalog& maps_;
   Store& store_;
   Metrics& metrics_;
+  OptimumCache optima_;
 
   mutable absl::Mutex mu_;
   std::map<std::string, JobPtr> jobs_ ABSL_GUARDED_BY(mu_);

@@ -147,6 +147,13 @@ v1::PlanResult ToProto(const PlanResult& r) {
     (*out.mutable_resolved_parameters())[name] = ToProto(value);
   }
   for (const IterationStats& s : r.convergence) *out.add_convergence() = ToProto(s);
+  out.set_optimum_planner(r.optimum.planner);
+  if (r.optimum.known) {
+    out.set_optimum_length(r.optimum.length);
+    if (r.found) out.set_optimality_ratio(r.optimality_ratio);
+  } else {
+    out.set_optimum_note(r.optimum.reason);
+  }
   return out;
 }
 
@@ -181,6 +188,7 @@ v1::Algorithm ToProto(const PlannerInfo& info) {
     p->set_unit(spec.unit);
     p->set_description(spec.description);
     p->set_default_is_ours(spec.ours);
+    p->set_population_size(spec.population_size);
   }
   return out;
 }

@@ -74,25 +74,26 @@ TEST(BenchReportTest, CsvFieldQuotesOnlyWhenNeeded) {
 
 TEST(BenchReportTest, CsvHeaderHasTheDocumentedColumns) {
   EXPECT_EQ(CsvHeader(),
-            "map,scenario,planner,seed,success,length,optimal,ratio,min_clearance,max_curvature,"
-            "iterations,evaluations,wall_seconds\n");
+            "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
+            "max_curvature,iterations,evaluations,wall_seconds\n");
 }
 
 TEST(BenchReportTest, CsvRowOfASuccessfulRun) {
   RunRecord r = Record("astar", "my,map.map", true, 12.5, 10.0, 0.25);
   r.scenario = "(1 2)->(3 4)";
   r.seed = 42;
+  r.scen_optimal = 10.5;
   r.min_clearance = 0.5;
   r.max_curvature = 0.0;
   r.iterations = 3;
   r.evaluations = 120;
   EXPECT_EQ(CsvRow(r),
-            "\"my,map.map\",(1 2)->(3 4),astar,42,true,12.5,10,1.25,0.5,0,3,120,0.250000\n");
+            "\"my,map.map\",(1 2)->(3 4),astar,42,true,12.5,10,1.25,10.5,0.5,0,3,120,0.250000\n");
 }
 
 TEST(BenchReportTest, CsvRowOfAFailedRunLeavesMeasuresEmpty) {
   const RunRecord r = Record("pso", "arena.map", false, 0.0, std::nullopt, 1.0);
-  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,0,0,1.000000\n");
+  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,,0,0,1.000000\n");
 }
 
 TEST(BenchReportTest, SummarizeGroupsByPlannerAndMapInFirstSeenOrder) {

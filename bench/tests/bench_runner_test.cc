@@ -103,7 +103,8 @@ TEST(BenchRunnerTest, ScenarioProblemsUseCellCentresAndWorldUnits) {
   EXPECT_EQ(p.scenario, "0");
   EXPECT_EQ(p.start, Point3(10.75, 21.25, 0));
   EXPECT_EQ(p.goal, Point3(12.75, 21.25, 0));
-  EXPECT_EQ(p.optimal, 2.0);
+  EXPECT_EQ(p.scen_optimal, 2.0);
+  EXPECT_FALSE(p.optimal.has_value());  // AddOptima fills it
 }
 
 TEST(BenchRunnerTest, ScenarioProblemsRejectAnotherSizeOrMapKind) {

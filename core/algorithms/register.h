@@ -1,14 +1,13 @@
 #pragma once
 
+#include "absl/status/status.h"
 #include "core/registry.h"
 
 namespace swarmplan {
 
-// Each planner family registers its planners; RegisterAllPlanners calls every one of them.
-void RegisterExactPlanners(Registry& registry);   // core/graph
-void RegisterBeetlePlanners(Registry& registry);  // core/algorithms/{bas,bso,pso,baselines}
-void RegisterGridPlanners(Registry& registry);    // core/algorithms/{bfo,afsa,bpso,baselines}
-
-void RegisterAllPlanners(Registry& registry);
+// Registers every planner swarmplan ships, in the order clients list them. The first failure
+// (a taken id or an incomplete info: a programming error) is returned and nothing after it is
+// registered.
+absl::Status RegisterAllPlanners(Registry& registry);
 
 }  // namespace swarmplan

@@ -70,9 +70,10 @@ def close(point, expected, tolerance=1e-6):
 
 
 def pick_swarm_planner(algorithms):
-    """A planner from a seed paper that plans on occupancy grids, if the server has one."""
+    """A swarm planner (not an exact one) that plans on occupancy grids, if the server has one."""
     for algorithm in algorithms:
-        if algorithm.get("seed_paper") and "MAP_KIND_OCCUPANCY_GRID" in algorithm.get("map_kinds", []):
+        if (algorithm.get("encoding") != "exact" and
+                "MAP_KIND_OCCUPANCY_GRID" in algorithm.get("map_kinds", [])):
             return algorithm["id"]
     return None
 

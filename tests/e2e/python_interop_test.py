@@ -111,7 +111,7 @@ def main():
 
         # A swarm planner streams one progress event per iteration.
         swarm = [a.id for a in listed.algorithms
-                 if a.seed_paper and common_pb2.MAP_KIND_OCCUPANCY_GRID in a.map_kinds]
+                 if a.encoding != "exact" and common_pb2.MAP_KIND_OCCUPANCY_GRID in a.map_kinds]
         if swarm:
             swarm_events = stream_plan(swarm[0], max_iterations=25)
             swarm_finished = swarm_events[-1].finished

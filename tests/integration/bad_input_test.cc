@@ -98,6 +98,13 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
        "iterations"},
       {"population above the server limit", param("population", 51), C::INVALID_ARGUMENT,
        "population"},
+      {"ants above the server's population limit",
+       [](auto& r) {
+         r.set_algorithm("aco-grid");
+         r.clear_parameters();
+         (*r.mutable_parameters())["ants"].set_int_value(51);
+       },
+       C::INVALID_ARGUMENT, "ants"},
       {"negative clearance", [](auto& r) { r.set_clearance(-1); }, C::INVALID_ARGUMENT,
        "clearance"},
       {"negative max_iterations", [](auto& r) { r.mutable_limits()->set_max_iterations(-1); },

@@ -6,7 +6,6 @@
 #include <memory>
 #include <vector>
 
-#include "core/algorithms/register.h"
 #include "core/geometry/collision.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -31,14 +30,7 @@ class RecordingObserver final : public Observer {
   std::vector<IterationStats> stats_;
 };
 
-inline const Registry& BeetleRegistry() {
-  static const Registry* const registry = [] {
-    auto* r = new Registry();
-    RegisterBeetlePlanners(*r);
-    return r;
-  }();
-  return *registry;
-}
+inline const Registry& BeetleRegistry() { return DefaultRegistry(); }
 
 inline SearchResult SolveOrDie(const std::string& id, const ParamValues& params,
                                const Problem& problem, Observer& observer,

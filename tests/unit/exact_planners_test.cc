@@ -1,4 +1,4 @@
-#include "core/graph/exact_planners.h"
+#include "core/algorithms/exact/exact_planners.h"
 
 #include <cmath>
 #include <memory>
@@ -59,7 +59,7 @@ TEST(ExactPlannersTest, RegisteredInTheDefaultRegistry) {
     const PlannerInfo* info = registry.Find(id);
     ASSERT_NE(info, nullptr) << id;
     EXPECT_FALSE(info->description.empty());
-    EXPECT_EQ(info->seed_paper, "");
+    EXPECT_FALSE(info->seed_paper.empty());
     EXPECT_EQ(info->encoding, Encoding::kExact);
   }
   EXPECT_TRUE(registry.Find("astar")->Supports(MapKind::kOccupancyGrid));

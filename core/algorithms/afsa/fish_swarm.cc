@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/grid_space.h"
@@ -206,7 +207,7 @@ PlannerInfo FishInfo(FishSwarmParams::Variant variant, std::string id, std::stri
   PlannerInfo info;
   info.id = std::move(id);
   info.description = std::move(description);
-  info.seed_paper = "003_a7a21fa31fe93d23.txt";
+  info.seed_paper = citations::kIdafsa;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = FishSwarmParams::Specs(variant);
@@ -242,7 +243,7 @@ std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
                       "shortest record"),
       ParamSpec::Bool("dynamic_visual", d.dynamic_visual, "feedback visual of eq 9"),
       ParamSpec::Bool("adaptive_step", d.adaptive_step, "adaptive step of eqs 10-11"),
-      ParamSpec::Int("population", d.population, 1, 100000, "fish", "N"),
+      ParamSpec::Int("population", d.population, 1, 100000, "fish", "N").PopulationSize(),
       ParamSpec::Int("try_number", d.try_number, 1, 10000, "tries", "prey attempts"),
       ParamSpec::Int("max_generations", d.max_generations, 1, 1000000, "iterations", "MAXGEN"),
       ParamSpec::Double("visual", d.visual, 0.0, 1e6, "cells", "visual (visual_max with eq 9)"),

@@ -1,3 +1,5 @@
+#include "core/algorithms/bas/bas_planners.h"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -5,15 +7,11 @@
 #include "core/algorithms/bas/beetle_antennae.h"
 #include "core/algorithms/bas/terrain_aco.h"
 #include "core/algorithms/bas/terrain_objective.h"
-#include "core/algorithms/bso/register_beetle.h"
+#include "core/algorithms/citations.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
 namespace {
-
-constexpr char kSeedPaper[] =
-    "Improved beetle antennae search for 3D path planning: LFS-BAS, ACO-BAS, SIO-BAS "
-    "(seed 000)";
 
 // One member of the family: which mechanisms it switches on.
 struct BasVariant {
@@ -35,7 +33,7 @@ std::vector<ParamSpec> TerrainPenaltyParam() {
 
 std::vector<ParamSpec> AcoParams() {
   return {
-      ParamSpec::Int("ants", 20, 1, 10000, "", "ants per generation"),
+      ParamSpec::Int("ants", 20, 1, 10000, "", "ants per generation").PopulationSize(),
       ParamSpec::Double("aco_alpha", 1.0, 0.0, 10.0, "", "pheromone exponent").Ours(),
       ParamSpec::Double("local_keep", 0.5, 0.0, 1.0, "",
                         "local update tau <- local_keep * tau on visited cells"),
@@ -70,7 +68,8 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
     specs.push_back(ParamSpec::Double("pso_c1", 1.5, 0.0, 100.0, "", "c1 of eq 19"));
   }
   if (v.population > 0) {
-    specs.push_back(ParamSpec::Int("population", v.population, 1, 10000, "", "beetles"));
+    specs.push_back(
+        ParamSpec::Int("population", v.population, 1, 10000, "", "beetles").PopulationSize());
   }
   specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells", "initial step delta0"));
   specs.push_back(ParamSpec::Double("step_decay", 0.998, 0.0, 1.0, "", "lambda1: delta decay"));
@@ -166,11 +165,11 @@ std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& par
       static_cast<int>(params.Int("iterations")));
 }
 
-void RegisterBas(Registry& registry, const BasVariant& v) {
+PlannerInfo BasFamilyInfo(const BasVariant& v) {
   PlannerInfo info;
   info.id = v.id;
   info.description = v.description;
-  info.seed_paper = kSeedPaper;
+  info.seed_paper = citations::kBeetleAntennae3d;
   info.encoding = Encoding::kColumns;
   info.map_kinds = {MapKind::kTerrain};
   if (!v.aco_init) {
@@ -179,10 +178,12 @@ void RegisterBas(Registry& registry, const BasVariant& v) {
   }
   info.params = BasParams(v);
   info.factory = [v](const ParamSet& params) { return MakeBasPlanner(v, params); };
-  MustRegisterPlanner(registry, std::move(info));
+  return info;
 }
 
-void RegisterTerrainAco(Registry& registry) {
+}  // namespace
+
+PlannerInfo TerrainAcoInfo() {
   PlannerInfo info;
   info.id = "aco";
   info.description =
@@ -190,7 +191,7 @@ void RegisterTerrainAco(Registry& registry) {
       "from the 5 x 5 (Y, Z) neighbourhood of the previous one, weighted by pheromone and "
       "H = S x D x M (validity, short steps toward the goal, low flight); local and global "
       "pheromone updates. Ours: the exact D and M terms, tau_min = 1e-3, unit height levels.";
-  info.seed_paper = kSeedPaper;
+  info.seed_paper = citations::kBeetleAntennae3d;
   info.encoding = Encoding::kColumns;
   info.map_kinds = {MapKind::kTerrain};
   info.params.push_back(
@@ -211,8 +212,10 @@ void RegisterTerrainAco(Registry& registry) {
         },
         static_cast<int>(params.Int("iterations")));
   };
-  MustRegisterPlanner(registry, std::move(info));
+  return info;
 }
+
+namespace {
 
 constexpr char kModel[] =
     " On a terrain: one waypoint (Y, Z) per column, fitness sum(sqrt(1 + dY^2 + dZ^2) + Z) "
@@ -223,40 +226,51 @@ constexpr char kModel[] =
 
 }  // namespace
 
-void RegisterBasPlanners(Registry& registry) {
-  RegisterBas(registry, {"bas",
-                         std::string("Beetle antennae search: one beetle, random direction b, "
-                                     "antennae x +- (delta/c) b, step delta toward the better "
-                                     "antenna, delta <- 0.998 delta.") +
-                             kModel,
-                         500});
-  RegisterBas(registry,
-              {"lfs-bas",
-               std::string("BAS with local fast search: when a step finds a new best, up to m "
-                           "antennae steps from the best with their own decaying step "
-                           "(eqs 9-11). Ours: m = 10, lambda = 0.95, a = b = gamma = 1.") +
-                   kModel,
-               500, 0, true});
-  RegisterBas(registry,
-              {"aco-bas",
-               "BAS started from the best path of one ACO generation (20 ants) on a terrain; "
-               "rationality check and step schedule as bas. Terrain only.",
-               500, 0, false, false, true});
-  RegisterBas(registry,
-              {"sio-bas",
-               std::string("Searching-information-oriented BAS: a population whose directions "
-                           "mix a random unit vector, the unit vector to the swarm's best and "
-                           "the previous better-antenna direction, b = normalise(eta1 b1 + eta2 "
-                           "b2 + eta3 b3) (eqs 16-18). Ours: eta = (0.6, 0.2, 0.2).") +
-                   kModel,
-               200, 5, false, true});
-  RegisterBas(registry,
-              {"multi-bas",
-               std::string("A population of independent BAS beetles (sio-bas with eta2 = eta3 "
-                           "= 0: no information sharing), the paper's Multi-BAS.") +
-                   kModel,
-               200, 5});
-  RegisterTerrainAco(registry);
+PlannerInfo BasInfo() {
+  return BasFamilyInfo({"bas",
+                        std::string("Beetle antennae search: one beetle, random direction b, "
+                                    "antennae x +- (delta/c) b, step delta toward the better "
+                                    "antenna, delta <- 0.998 delta.") +
+                            kModel,
+                        500});
+}
+
+PlannerInfo LfsBasInfo() {
+  return BasFamilyInfo(
+      {"lfs-bas",
+       std::string("BAS with local fast search: when a step finds a new best, up to m "
+                   "antennae steps from the best with their own decaying step "
+                   "(eqs 9-11). Ours: m = 10, lambda = 0.95, a = b = gamma = 1.") +
+           kModel,
+       500, 0, true});
+}
+
+PlannerInfo AcoBasInfo() {
+  return BasFamilyInfo(
+      {"aco-bas",
+       "BAS started from the best path of one ACO generation (20 ants) on a terrain; "
+       "rationality check and step schedule as bas. Terrain only.",
+       500, 0, false, false, true});
+}
+
+PlannerInfo SioBasInfo() {
+  return BasFamilyInfo(
+      {"sio-bas",
+       std::string("Searching-information-oriented BAS: a population whose directions "
+                   "mix a random unit vector, the unit vector to the swarm's best and "
+                   "the previous better-antenna direction, b = normalise(eta1 b1 + eta2 "
+                   "b2 + eta3 b3) (eqs 16-18). Ours: eta = (0.6, 0.2, 0.2).") +
+           kModel,
+       200, 5, false, true});
+}
+
+PlannerInfo MultiBasInfo() {
+  return BasFamilyInfo(
+      {"multi-bas",
+       std::string("A population of independent BAS beetles (sio-bas with eta2 = eta3 "
+                   "= 0: no information sharing), the paper's Multi-BAS.") +
+           kModel,
+       200, 5});
 }
 
 }  // namespace swarmplan

@@ -1,13 +1,15 @@
+#include "core/algorithms/baselines/ba_planner.h"
+
 #include <memory>
 
 #include "core/algorithms/baselines/ba.h"
-#include "core/algorithms/bso/register_beetle.h"
 #include "core/algorithms/bso/swarm_options.h"
+#include "core/algorithms/citations.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
 
-void RegisterBatPlanner(Registry& registry) {
+PlannerInfo BatInfo() {
   PlannerInfo info;
   info.id = "ba";
   info.description =
@@ -15,11 +17,11 @@ void RegisterBatPlanner(Registry& registry) {
       "L (1 + M xi), the BA baseline of seed 002: frequency-tuned velocities toward the best "
       "bat, local walks around it at rate 1 - r, acceptance by loudness; alpha = gamma = 0.9. "
       "Ours: f in [0, 2], A0 = 1, r0 = 0.5, local walk scaled by 1% of the span, k = 3.";
-  info.seed_paper = "";
+  info.seed_paper = citations::kBat;
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
   info.params = WaypointParams(500, 3);
-  info.params.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "bats"));
+  info.params.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "bats").PopulationSize());
   info.params.push_back(ParamSpec::Double("f_min", 0.0, 0.0, 100.0, "", "lowest frequency").Ours());
   info.params.push_back(
       ParamSpec::Double("f_max", 2.0, 0.0, 100.0, "", "highest frequency").Ours());
@@ -42,7 +44,7 @@ void RegisterBatPlanner(Registry& registry) {
         },
         static_cast<int>(params.Int("iterations")));
   };
-  MustRegisterPlanner(registry, std::move(info));
+  return info;
 }
 
 }  // namespace swarmplan

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "core/algorithms/baselines/grid_baselines.h"
+#include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/grid_moves.h"
 #include "core/grid_ops/grid_space.h"
@@ -126,7 +127,7 @@ class GridAcoSearch {
 std::vector<ParamSpec> GridAcoParams::Specs() {
   const GridAcoParams d;
   std::vector<ParamSpec> specs = {
-      ParamSpec::Int("ants", d.ants, 1, 100000, "ants", "ants per iteration"),
+      ParamSpec::Int("ants", d.ants, 1, 100000, "ants", "ants per iteration").PopulationSize(),
       ParamSpec::Double("alpha", d.alpha, 0.0, 20.0, "", "pheromone exponent α"),
       ParamSpec::Double("beta", d.beta, 0.0, 20.0, "", "heuristic exponent β"),
       ParamSpec::Double("rho", d.rho, 0.0, 1.0, "", "evaporation ρ"),
@@ -162,6 +163,7 @@ absl::StatusOr<SearchResult> RunGridSearch(const GridAcoParams& params, const Pr
 PlannerInfo GridAcoInfo() {
   PlannerInfo info;
   info.id = "aco-grid";
+  info.seed_paper = citations::kAntColony;
   info.description =
       "Ant colony on the 8-connected grid (the AS-BFO paper's baseline): ants walk from the "
       "start without revisiting cells, choosing moves with probability ∝ τ^α η^β, η = 1/distance "

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "core/algorithms/baselines/grid_baselines.h"
+#include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/grid_moves.h"
 #include "core/grid_ops/grid_space.h"
@@ -134,6 +135,7 @@ absl::StatusOr<SearchResult> RunGridSearch(const GridApfParams& params, const Pr
 PlannerInfo GridApfInfo() {
   PlannerInfo info;
   info.id = "apf";
+  info.seed_paper = citations::kPotentialField;
   info.description =
       "Artificial potential field on the 8-connected grid: steepest descent of "
       "U = ½k_att·d² + ½k_rep·(1/ρ − 1/ρ0)² (ρ < ρ0) over the neighbours, one step per "

@@ -2,6 +2,7 @@
 
 #include "absl/container/flat_hash_map.h"
 #include "core/algorithms/baselines/grid_baselines.h"
+#include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/grid_space.h"
@@ -146,6 +147,7 @@ std::vector<ParamSpec> GridGaParams::Specs() {
   const GridGaParams d;
   std::vector<ParamSpec> specs = {
       ParamSpec::Int("population", d.population, 2, 100000, "individuals", "population size")
+          .PopulationSize()
           .Ours(),
       ParamSpec::Int("generations", d.generations, 1, 1000000, "iterations", "generations").Ours(),
       ParamSpec::Double("crossover_probability", d.crossover_probability, 0.0, 1.0, "",
@@ -188,6 +190,7 @@ absl::StatusOr<SearchResult> RunGridSearch(const GridGaParams& params, const Pro
 PlannerInfo GridGaInfo() {
   PlannerInfo info;
   info.id = "ga";
+  info.seed_paper = citations::kGeneticAlgorithm;
   info.description =
       "Genetic algorithm on 8-connected grid paths (the AS-BFO and binary PSO papers' "
       "baseline): initial paths through 1-3 random cells joined by A*, roulette selection on "

@@ -4,6 +4,7 @@
 #include <limits>
 #include <numeric>
 
+#include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/grid_moves.h"
@@ -186,7 +187,8 @@ class AsBfoSearch {
 std::vector<ParamSpec> AsBfoParams::Specs() {
   const AsBfoParams d;
   std::vector<ParamSpec> specs = {
-      ParamSpec::Int("population", d.population, 2, 10000, "bacteria", "P, the number of bacteria"),
+      ParamSpec::Int("population", d.population, 2, 10000, "bacteria", "P, the number of bacteria")
+          .PopulationSize(),
       ParamSpec::Int("chemotactic_steps", d.chemotactic_steps, 1, 10000, "steps",
                      "Nc, chemotactic steps per reproduction"),
       ParamSpec::Int("reproduction_steps", d.reproduction_steps, 1, 1000, "steps",
@@ -244,7 +246,7 @@ PlannerInfo AsBfoInfo() {
       "step of every bacterium (Nc*Nre*Ned in all). Ours: initial paths through 1-3 random cells "
       "joined by A*, Ns = 4, Ped = 0.25, tumbles kept even when worse (classic BFO), no "
       "cell-to-cell term, shape worlds rasterised at `resolution`.";
-  info.seed_paper = "001_dc28e5c19854ea0b.txt";
+  info.seed_paper = citations::kAsBfo;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = AsBfoParams::Specs();

@@ -7,6 +7,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_format.h"
+#include "core/algorithms/citations.h"
 #include "core/geometry/collision.h"
 #include "core/geometry/obstacle_vertices.h"
 #include "core/graph/grid_search.h"
@@ -277,7 +278,7 @@ PlannerInfo BinaryPsoInfo() {
       "count, c1 = c2 = 2, w 0.9 -> 0.4, 100 iterations. Ours: |v| <= 4, N = 100 x the map "
       "diagonal, a mutated bit's assistant position is negated; on grids the vertices are the "
       "free cells diagonally outside convex corners of blocked regions.";
-  info.seed_paper = "004_ac85592f90e54f33.txt";
+  info.seed_paper = citations::kImprovedBinaryPso;
   info.encoding = Encoding::kVertexSubset;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
   info.params = BinaryPsoParams::Specs();

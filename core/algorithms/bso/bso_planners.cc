@@ -1,21 +1,19 @@
+#include "core/algorithms/bso/bso_planners.h"
+
 #include <memory>
 #include <string>
 
 #include "core/algorithms/bso/beetle_swarm.h"
-#include "core/algorithms/bso/register_beetle.h"
 #include "core/algorithms/bso/swarm_options.h"
+#include "core/algorithms/citations.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
 namespace {
 
-constexpr char kSeedPaper[] =
-    "Ouyang, Kuang, Ye: Path planning based on improved beetle swarm optimization algorithm and "
-    "cubic spline interpolation (seed 002)";
-
 std::vector<ParamSpec> SwarmParams(bool aem, const std::string& inertia) {
   std::vector<ParamSpec> specs = WaypointParams(500, 3);
-  specs.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "beetles"));
+  specs.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "beetles").PopulationSize());
   specs.push_back(ParamSpec::Enum("inertia", inertia, {"linear", "cosine"},
                                   "inertia schedule: linear (eq 4) or cos(pi/2 sqrt(t/tmax)) "
                                   "(eq 6)"));
@@ -51,7 +49,7 @@ PlannerInfo SwarmInfo(const std::string& id, const std::string& description, boo
   PlannerInfo info;
   info.id = id;
   info.description = description;
-  info.seed_paper = kSeedPaper;
+  info.seed_paper = citations::kAemBso;
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
   info.params = SwarmParams(aem, inertia);
@@ -70,29 +68,29 @@ PlannerInfo SwarmInfo(const std::string& id, const std::string& description, boo
 
 }  // namespace
 
-void RegisterBsoPlanners(Registry& registry) {
-  MustRegisterPlanner(
-      registry,
-      SwarmInfo("bso",
-                "Beetle swarm optimisation (eqs 1-4): PSO velocities plus an antennae term "
-                "-delta b sign(f_r - f_l), random initialisation, linear inertia. Path: k "
-                "waypoints joined by a cubic spline, fitness L (1 + M xi). Ours: delta0 = 5% of "
-                "the span decaying by 0.99, velocity clamp 20% of the span, k = 3 waypoints.",
-                false, "linear"));
-  MustRegisterPlanner(
-      registry,
-      SwarmInfo("aem-bso",
-                "Adaptive elite mutation BSO: BSO with good point set initialisation (eq 5), "
-                "nonlinear inertia w_min + (w_max - w_min) cos(pi/2 sqrt(t/tmax)) (eq 6) and "
-                "elite mutation gbest (1 +- (G1 + G2 + mu)) kept when better (eqs 7-9). Ours: "
-                "k1 = k2 = 0.1, k3 = -1 (the paper gives none), plus the BSO choices of `bso`.",
-                true, "cosine"));
-  MustRegisterPlanner(
-      registry,
-      SwarmInfo("aem-bso-linear",
-                "AEM-BSO with the linear inertia of eq 4 (the paper's AEM-BSO2); otherwise "
-                "identical to aem-bso.",
-                true, "linear"));
+PlannerInfo BsoInfo() {
+  return SwarmInfo("bso",
+                   "Beetle swarm optimisation (eqs 1-4): PSO velocities plus an antennae term "
+                   "-delta b sign(f_r - f_l), random initialisation, linear inertia. Path: k "
+                   "waypoints joined by a cubic spline, fitness L (1 + M xi). Ours: delta0 = 5% of "
+                   "the span decaying by 0.99, velocity clamp 20% of the span, k = 3 waypoints.",
+                   false, "linear");
+}
+
+PlannerInfo AemBsoInfo() {
+  return SwarmInfo("aem-bso",
+                   "Adaptive elite mutation BSO: BSO with good point set initialisation (eq 5), "
+                   "nonlinear inertia w_min + (w_max - w_min) cos(pi/2 sqrt(t/tmax)) (eq 6) and "
+                   "elite mutation gbest (1 +- (G1 + G2 + mu)) kept when better (eqs 7-9). Ours: "
+                   "k1 = k2 = 0.1, k3 = -1 (the paper gives none), plus the BSO choices of `bso`.",
+                   true, "cosine");
+}
+
+PlannerInfo AemBsoLinearInfo() {
+  return SwarmInfo("aem-bso-linear",
+                   "AEM-BSO with the linear inertia of eq 4 (the paper's AEM-BSO2); otherwise "
+                   "identical to aem-bso.",
+                   true, "linear");
 }
 
 }  // namespace swarmplan

@@ -1,13 +1,15 @@
+#include "core/algorithms/pso/pso_planner.h"
+
 #include <memory>
 
 #include "core/algorithms/bso/beetle_swarm.h"
-#include "core/algorithms/bso/register_beetle.h"
 #include "core/algorithms/bso/swarm_options.h"
+#include "core/algorithms/citations.h"
 #include "core/operators/waypoint_params.h"
 
 namespace swarmplan {
 
-void RegisterPsoPlanner(Registry& registry) {
+PlannerInfo PsoInfo() {
   PlannerInfo info;
   info.id = "pso";
   info.description =
@@ -15,11 +17,12 @@ void RegisterPsoPlanner(Registry& registry) {
       "seeds 000 and 002): linear inertia 0.9 -> 0.4, c1 = c2 = 2, random initialisation, "
       "fitness L (1 + M xi). It is the beetle swarm loop with the antennae term switched off. "
       "Ours: velocity clamp 20% of the span, k = 3 waypoints.";
-  info.seed_paper = "";
+  info.seed_paper = citations::kPso;
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
   info.params = WaypointParams(500, 3);
-  info.params.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "particles"));
+  info.params.push_back(
+      ParamSpec::Int("population", 100, 2, 100000, "", "particles").PopulationSize());
   info.params.push_back(ParamSpec::Double("w_max", 0.9, 0.0, 2.0, "", "initial inertia"));
   info.params.push_back(ParamSpec::Double("w_min", 0.4, 0.0, 2.0, "", "final inertia"));
   info.params.push_back(ParamSpec::Double("c1", 2.0, 0.0, 10.0, "", "personal-best factor"));
@@ -37,7 +40,7 @@ void RegisterPsoPlanner(Registry& registry) {
         },
         static_cast<int>(params.Int("iterations")));
   };
-  MustRegisterPlanner(registry, std::move(info));
+  return info;
 }
 
 }  // namespace swarmplan

@@ -1,4 +1,4 @@
-#include "core/graph/exact_planners.h"
+#include "core/algorithms/exact/exact_planners.h"
 
 #include <cstdlib>
 #include <memory>
@@ -8,7 +8,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
-#include "core/algorithms/register.h"
+#include "core/algorithms/citations.h"
 #include "core/geometry/grid_collision.h"
 #include "core/graph/grid_search.h"
 #include "core/graph/theta_star.h"
@@ -162,12 +162,12 @@ std::vector<ParamSpec> GridMoveParams() {
   };
 }
 
-PlannerInfo GridSearchInfo(const char* id, std::string description, bool use_heuristic,
-                           bool any_angle) {
+PlannerInfo GridSearchInfo(const char* id, std::string description, const char* citation,
+                           bool use_heuristic, bool any_angle) {
   PlannerInfo info;
   info.id = id;
   info.description = std::move(description);
-  info.seed_paper = "";
+  info.seed_paper = citation;
   info.encoding = Encoding::kExact;
   info.map_kinds = {MapKind::kOccupancyGrid};
   info.params = GridMoveParams();
@@ -180,6 +180,36 @@ PlannerInfo GridSearchInfo(const char* id, std::string description, bool use_heu
   return info;
 }
 
+}  // namespace
+
+PlannerInfo AStarInfo() {
+  return GridSearchInfo("astar",
+                        "A* over the cells of an occupancy grid: 8- or 4-connected, octile step "
+                        "costs (1 and sqrt(2) cells), no corner cutting by default, octile "
+                        "heuristic. The exact shortest grid path through cell centres; with a "
+                        "clearance, only cells whose centre keeps it from every blocked cell "
+                        "square are used. One iteration.",
+                        citations::kAStar, true, false);
+}
+
+PlannerInfo DijkstraInfo() {
+  return GridSearchInfo("dijkstra",
+                        "Dijkstra over the cells of an occupancy grid, with the same moves and "
+                        "costs as astar but no heuristic: the same optimal length, a reference "
+                        "for astar. One iteration.",
+                        citations::kDijkstra, false, false);
+}
+
+PlannerInfo ThetaStarInfo() {
+  return GridSearchInfo("theta-star",
+                        "Theta*: A* over the grid's cells where a cell may link straight to its "
+                        "parent's parent when the segment between their centres is "
+                        "collision-free, giving any-angle paths usually shorter than grid paths "
+                        "(not guaranteed optimal). Moves and clearance as in astar. One "
+                        "iteration.",
+                        citations::kThetaStar, true, true);
+}
+
 PlannerInfo VisibilityGraphInfo() {
   PlannerInfo info;
   info.id = "visibility-graph";
@@ -189,7 +219,7 @@ PlannerInfo VisibilityGraphInfo() {
       "circumscribed polygons whose vertices lie at most circle_tolerance beyond the true "
       "boundary, so the path is optimal up to that tolerance per arc and always keeps the "
       "clearance. One iteration.";
-  info.seed_paper = "";
+  info.seed_paper = citations::kVisibilityGraph;
   info.encoding = Encoding::kExact;
   info.map_kinds = {MapKind::kShapeWorld};
   info.params = {ParamSpec::Double("circle_tolerance", 0.01, 1e-6, std::nullopt, "map units",
@@ -200,41 +230,6 @@ PlannerInfo VisibilityGraphInfo() {
     return std::make_unique<VisibilityGraphPlanner>(params.Double("circle_tolerance"));
   };
   return info;
-}
-
-void MustRegister(Registry& registry, PlannerInfo info) {
-  const absl::Status status = registry.Register(std::move(info));
-  // Registration of our own planners fails only on a programming error.
-  if (!status.ok()) std::abort();
-}
-
-}  // namespace
-
-void RegisterExactPlanners(Registry& registry) {
-  MustRegister(registry,
-               GridSearchInfo("astar",
-                              "A* over the cells of an occupancy grid: 8- or 4-connected, octile "
-                              "step costs (1 and sqrt(2) cells), no corner cutting by default, "
-                              "octile heuristic. The exact shortest grid path through cell "
-                              "centres; with a clearance, only cells whose centre keeps it from "
-                              "every blocked cell square are used. One iteration.",
-                              true, false));
-  MustRegister(registry, GridSearchInfo("dijkstra",
-                                        "Dijkstra over the cells of an occupancy grid, with the "
-                                        "same moves and costs as astar but no heuristic: the "
-                                        "same optimal length, a reference for astar. One "
-                                        "iteration.",
-                                        false, false));
-  MustRegister(
-      registry,
-      GridSearchInfo("theta-star",
-                     "Theta* (Nash et al. 2007): A* over the grid's cells where a cell "
-                     "may link straight to its parent's parent when the segment between "
-                     "their centres is collision-free, giving any-angle paths usually shorter "
-                     "than grid paths (not guaranteed optimal). Moves and clearance as "
-                     "in astar. One iteration.",
-                     true, true));
-  MustRegister(registry, VisibilityGraphInfo());
 }
 
 }  // namespace swarmplan
