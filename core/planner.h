@@ -55,6 +55,10 @@ class Planner {
   virtual ~Planner() = default;
   virtual absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
                                              Observer& observer) = 0;
+  // What only this planner can tell about a problem the map-level checks accepted (e.g. that its
+  // raster can use the start and goal), without planning: FAILED_PRECONDITION saying what it
+  // cannot use. Solve would fail with the same error. The default accepts every problem.
+  virtual absl::Status CheckProblem(const Problem& /*problem*/) const { return absl::OkStatus(); }
 };
 
 }  // namespace swarmplan

@@ -48,10 +48,8 @@ absl::Status CheckEndpoint(const Map& map, const CollisionChecker& checker, cons
 absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& request) {
   absl::StatusOr<const PlannerInfo*> info = registry.Get(request.algorithm);
   if (!info.ok()) return info.status();
-  if (absl::StatusOr<ParamSet> params = ParamSet::Resolve((*info)->params, request.params);
-      !params.ok()) {
-    return params.status();
-  }
+  absl::StatusOr<ParamSet> params = ParamSet::Resolve((*info)->params, request.params);
+  if (!params.ok()) return params.status();
   const Problem& problem = request.problem;
   if (problem.map == nullptr) return absl::InvalidArgumentError("map: no map given");
   const Map& map = *problem.map;
@@ -77,7 +75,16 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
       !s.ok()) {
     return s;
   }
-  return CheckEndpoint(map, *checker, problem.goal, problem.clearance, "goal");
+  if (absl::Status s = CheckEndpoint(map, *checker, problem.goal, problem.clearance, "goal");
+      !s.ok()) {
+    return s;
+  }
+  const std::unique_ptr<Planner> planner = (*info)->factory(*params);
+  if (absl::Status s = planner->CheckProblem(problem); !s.ok()) {
+    return absl::Status(s.code(), absl::StrCat("algorithm '", request.algorithm,
+                                               "' cannot plan this request: ", s.message()));
+  }
+  return absl::OkStatus();
 }
 
 absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,

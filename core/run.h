@@ -48,9 +48,11 @@ struct PlanResult {
 };
 
 // Checks the request (known algorithm, parameters, map kind, start and goal inside the map and
-// clear of obstacles), then runs the planner under `stop` (tightened by the problem's limits),
-// smooths and evaluates the path. Errors: INVALID_ARGUMENT (parameters, smoothing),
-// NOT_FOUND (algorithm), FAILED_PRECONDITION (map kind, start or goal blocked or outside).
+// clear of obstacles, and the planner's own Planner::CheckProblem), then runs the planner
+// under `stop` (tightened by the problem's limits), smooths and evaluates the path. Errors:
+// INVALID_ARGUMENT (parameters, smoothing), NOT_FOUND (algorithm), FAILED_PRECONDITION (map
+// kind, start or goal blocked or outside, or not usable by the planner, e.g. in a blocked cell
+// of its raster: the message names the algorithm and the cell).
 absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,
                                    const StopToken& stop, Observer& observer);
 

@@ -20,7 +20,8 @@ bool CollisionChecker::PathFree(const Path& path, double clearance) const {
 
 double CollisionChecker::PathClearance(const Path& path) const {
   if (path.empty()) return -std::numeric_limits<double>::infinity();
-  if (path.size() == 1) return Clearance(path.front());
+  // A segment's clearance is exact where a point's may be a bound (far from obstacles on grids).
+  if (path.size() == 1) return SegmentClearance(path.front(), path.front());
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i + 1 < path.size(); ++i) {
     best = std::min(best, SegmentClearance(path[i], path[i + 1]));

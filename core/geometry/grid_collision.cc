@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/geometry/primitives.h"
+
 namespace swarmplan {
 namespace {
 
@@ -24,6 +26,48 @@ constexpr double kClearanceStep = 0.25;
 double StretchBound(double fa, double fb, double step) {
   return std::min({fa, fb, 0.5 * (fa + fb - step)});
 }
+
+// Distance from p to the closed unit square with lower corner (x, y).
+double PointSquareDistance(const Point2& p, int x, int y) {
+  const double dx = std::max({0.0, x - p.x(), p.x() - (x + 1)});
+  const double dy = std::max({0.0, y - p.y(), p.y() - (y + 1)});
+  return std::hypot(dx, dy);
+}
+
+// True when the segment meets the closed unit square with lower corner (x, y) (slab clipping).
+bool SegmentMeetsSquare(const Point2& a, const Point2& b, int x, int y) {
+  double t0 = 0.0, t1 = 1.0;
+  const Point2 d = b - a;
+  const Point2 lo(x, y);
+  for (int axis = 0; axis < 2; ++axis) {
+    if (d[axis] == 0.0) {
+      if (a[axis] < lo[axis] || a[axis] > lo[axis] + 1) return false;
+      continue;
+    }
+    double ta = (lo[axis] - a[axis]) / d[axis];
+    double tb = (lo[axis] + 1 - a[axis]) / d[axis];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Exact distance between the segment and the closed unit square with lower corner (x, y): 0
+// when they meet, otherwise attained at an end of the segment or at a corner of the square.
+double SegmentSquareDistance(const Point2& a, const Point2& b, int x, int y) {
+  if (SegmentMeetsSquare(a, b, x, y)) return 0.0;
+  double best = std::min(PointSquareDistance(a, x, y), PointSquareDistance(b, x, y));
+  for (const Point2& corner :
+       {Point2(x, y), Point2(x + 1, y), Point2(x, y + 1), Point2(x + 1, y + 1)}) {
+    best = std::min(best, PointSegmentDistance(corner, a, b));
+  }
+  return best;
+}
+
+// Pieces of a segment at most this long (cells) are scanned cell by cell, longer ones halved.
+constexpr double kScanPieceLength = 2.0;
 
 }  // namespace
 
@@ -103,12 +147,70 @@ double GridCollisionChecker::TraceClearance(const Point2& a, const Point2& b, do
   return result;
 }
 
+// Branch and bound over pieces of the segment. For a piece with middle m and half-length h,
+// every blocked square is at least (field distance at m's cell) - |m - cell centre| - half a
+// diagonal - h away from the piece, and the nearest blocked centre to m's cell is at most
+// (field distance) + |m - cell centre| from it: pieces whose lower bound exceeds the best upper
+// bound so far are skipped, short pieces scan the cells within that bound.
+double GridCollisionChecker::SquareDistance(const Point2& a, const Point2& b, double bound,
+                                            bool stop_below_bound) const {
+  if (grid_.BlockedCount() == 0) return kInf;
+  const Point2 d = b - a;
+  const double length = d.norm();
+  double threshold = bound;  // the exact distance is <= threshold, or >= bound
+  double found = kInf;       // the least exact distance to a scanned square
+  struct Piece {
+    double t0, t1;
+  };
+  Piece stack[64];
+  int top = 0;
+  stack[top++] = Piece{0.0, 1.0};
+  while (top > 0) {
+    const Piece piece = stack[--top];
+    const Point2 p0 = a + piece.t0 * d, p1 = a + piece.t1 * d;
+    const Point2 mid = 0.5 * (p0 + p1);
+    const double half = 0.5 * (piece.t1 - piece.t0) * length;
+    const int cx = std::clamp(static_cast<int>(std::floor(mid.x())), 0, grid_.width() - 1);
+    const int cy = std::clamp(static_cast<int>(std::floor(mid.y())), 0, grid_.height() - 1);
+    const double centre = grid_.DistanceToObstacle(cx, cy) * inv_resolution_;
+    const double offset = (mid - Point2(cx + 0.5, cy + 0.5)).norm();
+    threshold = std::min(threshold, centre + offset);
+    const double lower = centre - offset - kHalfDiagonal - half - 1e-12;
+    if (lower > threshold) continue;
+    if (2 * half > kScanPieceLength && top + 2 <= 64) {
+      const double t_mid = 0.5 * (piece.t0 + piece.t1);
+      stack[top++] = Piece{t_mid, piece.t1};  // the nearer half (towards a) is taken first
+      stack[top++] = Piece{piece.t0, t_mid};
+      continue;
+    }
+    const Point2 lo = p0.cwiseMin(p1), hi = p0.cwiseMax(p1);
+    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y() - threshold)) - 1);
+    const int y1 = std::min(grid_.height() - 1, static_cast<int>(std::floor(hi.y() + threshold)));
+    const int x0 = std::max(0, static_cast<int>(std::floor(lo.x() - threshold)) - 1);
+    const int x1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(hi.x() + threshold)));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (!grid_.IsBlocked(x, y)) continue;
+        const double distance = SegmentSquareDistance(a, b, x, y);
+        if (distance < found) {
+          found = distance;
+          threshold = std::min(threshold, found);
+          if (stop_below_bound && found < bound) return found;
+        }
+      }
+    }
+  }
+  return found < bound ? found : std::max(found, bound);
+}
+
 double GridCollisionChecker::SegmentClearance(const Point3& a, const Point3& b) const {
   const Point2 ua = (a.head<2>() - grid_.origin()) * inv_resolution_;
   const Point2 ub = (b.head<2>() - grid_.origin()) * inv_resolution_;
   if (!InMap(ua) || !InMap(ub)) return -kInf;
-  const double c = TraceClearance(ua, ub, -kInf);
-  return std::isfinite(c) ? c * grid_.resolution() : c;
+  const double exact = SquareDistance(ua, ub, kInf, /*stop_below_bound=*/false);
+  if (exact > 0.0) return exact == kInf ? kInf : exact * grid_.resolution();
+  // The segment meets a blocked square: report how deep the tracing finds it inside.
+  return std::min(0.0, TraceClearance(ua, ub, -kInf)) * grid_.resolution();
 }
 
 bool GridCollisionChecker::SegmentFree(const Point3& a, const Point3& b, double clearance) const {
@@ -117,7 +219,8 @@ bool GridCollisionChecker::SegmentFree(const Point3& a, const Point3& b, double 
   if (!InMap(ua) || !InMap(ub)) return false;
   if (clearance <= 0) return TraversalFree(ua, ub);
   const double floor = clearance * inv_resolution_;
-  return TraceClearance(ua, ub, floor) >= floor;
+  if (TraceClearance(ua, ub, floor) >= floor) return true;
+  return SquareDistance(ua, ub, floor, /*stop_below_bound=*/true) >= floor;
 }
 
 bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const {

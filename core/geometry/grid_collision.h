@@ -17,11 +17,13 @@ class GridCollisionChecker final : public CollisionChecker {
   // below the truth. Negative inside a blocked cell (minus the depth in that cell, at least
   // 1e-9 cells), +infinity when nothing is blocked.
   double Clearance(const Point3& p) const override;
-  // Sphere tracing with Clearance: a lower bound, at most resolution / 8 below the exact value
-  // near obstacles (plus Clearance's own slack far from them).
+  // Exact distance from the segment to the nearest blocked square (a == b: from the point).
+  // When the segment meets a blocked square: 0, or negative when sphere tracing finds it inside
+  // one (then about minus its depth there). +infinity when nothing is blocked.
   double SegmentClearance(const Point3& a, const Point3& b) const override;
   // clearance <= 0: exact cell traversal (every cell whose closed square meets the segment
-  // must be free). clearance > 0: conservative sphere tracing.
+  // must be free). clearance > 0: sphere tracing accepts what it can prove free; the rest is
+  // decided by the exact distance, so the answer is exact either way.
   bool SegmentFree(const Point3& a, const Point3& b, double clearance) const override;
 
   // True when every cell whose closed square meets the segment is free (a and b in grid
@@ -35,6 +37,11 @@ class GridCollisionChecker final : public CollisionChecker {
   // Smallest clearance along a..b (grid coordinates, in cells) while it stays >= floor;
   // returns a value below floor as soon as one is found.
   double TraceClearance(const Point2& a, const Point2& b, double floor) const;
+  // Exact distance (cells) from a..b (grid coordinates) to the nearest blocked square when it
+  // is below `bound`; otherwise some value >= bound. With stop_below_bound, returns as soon
+  // as any square closer than `bound` is found (a value < bound, not necessarily the least).
+  double SquareDistance(const Point2& a, const Point2& b, double bound,
+                        bool stop_below_bound) const;
 
   const OccupancyGrid& grid_;
   double inv_resolution_;

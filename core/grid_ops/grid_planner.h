@@ -27,6 +27,11 @@ class GridPlanner final : public Planner {
     return RunGridSearch(params_, problem, *space, stop, observer);
   }
 
+  // The start and goal cells of the grid space must be usable.
+  absl::Status CheckProblem(const Problem& problem) const override {
+    return MakeGridSpace(problem, params_.resolution).status();
+  }
+
  private:
   Params params_;
 };

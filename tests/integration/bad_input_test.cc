@@ -294,5 +294,44 @@ TEST_F(BadInputTest, EmptyIdsAndNegativePageSizesAreInvalidArguments) {
   ExpectHealthyAndNothingLost();
 }
 
+// A goal 0.3 from a polygon: a grid planner whose 1-unit raster cell there is blocked is
+// rejected at submission, naming the planner and the cell; on the automatic raster (the
+// default) the same request is accepted and succeeds.
+TEST_F(BadInputTest, RasterCellAPlannerCannotUseIsRejectedAtSubmission) {
+  v1::UploadMapRequest upload;
+  upload.set_name("block");
+  v1::ShapeWorldData* w = upload.mutable_source()->mutable_structured()->mutable_shape_world();
+  w->mutable_max()->set_x(20);
+  w->mutable_max()->set_y(10);
+  v1::Polygon* block = w->add_polygons();
+  for (const auto& [x, y] : {std::pair{10.3, 0.0}, {12.0, 0.0}, {12.0, 6.0}, {10.3, 6.0}}) {
+    v1::Point* p = block->add_vertices();
+    p->set_x(x);
+    p->set_y(y);
+  }
+  v1::UploadMapResponse uploaded;
+  grpc::ClientContext upload_context;
+  ASSERT_TRUE(server_.maps().UploadMap(&upload_context, upload, &uploaded).ok());
+  v1::PlanRequest request = TestServer::Request(uploaded.map().id(), "as-bfo", 10.0);
+  request.mutable_start()->set_x(2);
+  request.mutable_start()->set_y(8);
+  request.mutable_goal()->set_y(3);
+  (*request.mutable_parameters())["population"].set_int_value(10);
+  request.mutable_limits()->set_max_iterations(20);
+
+  v1::PlanRequest coarse = request;
+  (*coarse.mutable_parameters())["resolution"].set_double_value(1.0);
+  v1::SubmitPlanResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = server_.jobs().SubmitPlan(&context, coarse, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION) << status.error_message();
+  EXPECT_NE(status.error_message().find("'as-bfo'"), std::string::npos) << status.error_message();
+  EXPECT_NE(status.error_message().find("cell (10, 3)"), std::string::npos)
+      << status.error_message();
+
+  const v1::Job job = server_.WaitUntilFinal(server_.SubmitOk(request).id());
+  EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED);
+}
+
 }  // namespace
 }  // namespace swarmplan::testing

@@ -9,6 +9,7 @@
 #include "core/geometry/primitives.h"
 #include "core/geometry/shape_collision.h"
 #include "core/geometry/terrain_collision.h"
+#include "core/map/generate.h"
 #include "core/random.h"
 #include "gtest/gtest.h"
 
@@ -103,8 +104,10 @@ TEST(GridCollisionTest, AlongAWall) {
   // With clearance: the wall is 0.5 below the centre line of row 0.
   EXPECT_TRUE(checker.SegmentFree(P(0.5, 0.5), P(5.5, 0.5), 0.45));
   EXPECT_FALSE(checker.SegmentFree(P(0.5, 0.5), P(5.5, 0.5), 0.55));
-  EXPECT_NEAR(checker.SegmentClearance(P(0.5, 0.5), P(5.5, 0.5)), 0.5, 0.125);
-  EXPECT_LE(checker.SegmentClearance(P(0.5, 0.5), P(5.5, 0.5)), 0.5);
+  EXPECT_DOUBLE_EQ(checker.SegmentClearance(P(0.5, 0.5), P(5.5, 0.5)), 0.5);
+  EXPECT_DOUBLE_EQ(checker.SegmentClearance(P(0.5, 0.5), P(0.5, 0.5)), 0.5);
+  EXPECT_LT(checker.SegmentClearance(P(0.5, 0.5), P(0.5, 2.5)), 0.0);  // through the wall
+  EXPECT_LE(checker.SegmentClearance(P(0.0, 1.0), P(6.0, 1.0)), 0.0);  // along its edge
 }
 
 TEST(GridCollisionTest, MapEdgesAndOutside) {
@@ -183,7 +186,7 @@ TEST(GridCollisionTest, TraversalMatchesExactGeometry) {
   }
 }
 
-TEST(GridCollisionTest, SegmentChecksWithClearanceAreConservativeAndTight) {
+TEST(GridCollisionTest, SegmentChecksWithClearanceAreExact) {
   Rng rng(13);
   for (int trial = 0; trial < 4; ++trial) {
     const OccupancyGrid grid = RandomGrid(rng, 24, 18, 0.04);
@@ -195,17 +198,52 @@ TEST(GridCollisionTest, SegmentChecksWithClearanceAreConservativeAndTight) {
                            .cwiseMin(Point2(24, 18));
       const double exact = BruteSegmentClearance(grid, a, b);
       const double c = rng.Uniform(0.05, 1.5);
-      const bool free = checker.SegmentFree(P(a.x(), a.y()), P(b.x(), b.y()), c);
-      if (free) {
-        ASSERT_GE(exact, c - 1e-9) << a.transpose() << " -> " << b.transpose();
-      }
-      if (exact >= c + 0.1) {
-        ASSERT_TRUE(free) << a.transpose() << " -> " << b.transpose();
+      if (std::abs(exact - c) > 1e-9) {
+        ASSERT_EQ(checker.SegmentFree(P(a.x(), a.y()), P(b.x(), b.y()), c), exact >= c)
+            << a.transpose() << " -> " << b.transpose() << " clearance " << c;
       }
       const double got = checker.SegmentClearance(P(a.x(), a.y()), P(b.x(), b.y()));
-      ASSERT_LE(got, exact + 1e-9);
-      if (exact > 0.0 && exact <= 1.5) {
-        ASSERT_GE(got, exact - 0.125 - 1e-9);
+      if (exact > 0.0) {
+        ASSERT_NEAR(got, exact, 1e-12) << a.transpose() << " -> " << b.transpose();
+      } else {
+        ASSERT_LE(got, 0.0) << a.transpose() << " -> " << b.transpose();
+      }
+    }
+  }
+}
+
+// The exact segment clearance against dense sampling with the exact point-to-square distance,
+// on dense and sparse grids (long segments far from every obstacle), at a resolution and
+// origin other than 1 and 0.
+TEST(GridCollisionTest, SegmentClearanceMatchesDenseSampling) {
+  Rng rng(17);
+  const double resolution = 0.5;
+  const Point2 origin(3, -2);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int w = 24, h = 16;
+    const OccupancyGrid cells = RandomGrid(rng, w, h, trial % 2 ? 0.003 : 0.15);
+    const OccupancyGrid grid = *OccupancyGrid::Create(w, h, cells.cells(), resolution, origin);
+    GridCollisionChecker checker(grid);
+    for (int i = 0; i < 40; ++i) {
+      const Point2 a(rng.Uniform(0, w), rng.Uniform(0, h));
+      const Point2 b = i % 3 ? Point2(rng.Uniform(0, w), rng.Uniform(0, h)) : a;
+      const Point3 wa = P(origin.x() + a.x() * resolution, origin.y() + a.y() * resolution);
+      const Point3 wb = P(origin.x() + b.x() * resolution, origin.y() + b.y() * resolution);
+      const double got = checker.SegmentClearance(wa, wb);
+      constexpr int kSamples = 1000;
+      double sampled = kInf;
+      for (int k = 0; k <= kSamples; ++k) {
+        sampled = std::min(sampled, BrutePointClearance(cells, a + (b - a) * k / kSamples));
+      }
+      sampled *= resolution;
+      const double spacing = (b - a).norm() * resolution / kSamples;
+      if (sampled > spacing) {
+        // Clearance is 1-Lipschitz: the true minimum is within half a spacing of the samples'.
+        ASSERT_LE(got, sampled + 1e-12) << a.transpose() << " -> " << b.transpose();
+        ASSERT_GE(got, sampled - spacing / 2 - 1e-12) << a.transpose() << " -> " << b.transpose();
+      }
+      if (sampled == 0.0) {
+        ASSERT_LE(got, 0.0) << a.transpose() << " -> " << b.transpose();
       }
     }
   }
@@ -277,6 +315,44 @@ TEST(ShapeCollisionTest, SegmentClearanceMatchesDenseSampling) {
       ASSERT_GE(got, sampled - spacing) << a.transpose() << " -> " << b.transpose();
     } else {
       ASSERT_LT(got, 0.0) << a.transpose() << " -> " << b.transpose();
+    }
+  }
+}
+
+// Random worlds of circles and convex polygons plus one non-convex polygon: the exact segment
+// clearance against dense sampling of the exact point clearance.
+TEST(ShapeCollisionTest, SegmentClearanceMatchesDenseSamplingOnRandomWorlds) {
+  Rng rng(23);
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    RandomWorldOptions options;
+    options.bounds = Bounds2{Point2(0, 0), Point2(30, 20)};
+    options.obstacle_ratio = 0.15;
+    options.min_radius = 1.0;
+    options.max_radius = 3.0;
+    absl::StatusOr<ShapeWorld> random = RandomShapeWorld(options, seed);
+    ASSERT_TRUE(random.ok()) << random.status();
+    std::vector<Polygon> polygons = random->polygons();
+    polygons.push_back(Polygon{{Point2(20, 2), Point2(26, 2), Point2(26, 8), Point2(24, 8),
+                                Point2(24, 4), Point2(20, 4)}});  // an L
+    const ShapeWorld world = *ShapeWorld::Create(options.bounds, random->circles(), polygons);
+    ShapeCollisionChecker checker(world);
+    for (int i = 0; i < 80; ++i) {
+      const Point3 a = P(rng.Uniform(0, 30), rng.Uniform(0, 20));
+      const Point3 b = i % 4 ? P(rng.Uniform(0, 30), rng.Uniform(0, 20)) : a;
+      const double got = checker.SegmentClearance(a, b);
+      constexpr int kSamples = 2000;
+      double sampled = kInf;
+      for (int k = 0; k <= kSamples; ++k) {
+        sampled = std::min(sampled, checker.Clearance(a + (b - a) * k / kSamples));
+      }
+      const double spacing = (b - a).norm() / kSamples;
+      if (sampled > spacing) {
+        ASSERT_LE(got, sampled + 1e-12) << a.transpose() << " -> " << b.transpose();
+        ASSERT_GE(got, sampled - spacing / 2 - 1e-12) << a.transpose() << " -> " << b.transpose();
+      }
+      if (sampled < 0.0) {
+        ASSERT_LT(got, 0.0) << a.transpose() << " -> " << b.transpose();
+      }
     }
   }
 }

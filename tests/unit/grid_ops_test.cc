@@ -4,7 +4,9 @@
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/collinear.h"
 #include "core/grid_ops/grid_moves.h"
+#include "core/grid_ops/grid_space.h"
 #include "core/grid_ops/roulette.h"
+#include "core/path_metrics.h"
 #include "gtest/gtest.h"
 #include "tests/unit/grid_planner_test_util.h"
 
@@ -163,6 +165,42 @@ TEST(GridOpsTest, PruneCollinearKeepsOnlyCorners) {
   const Path pruned = PruneCollinear(path);
   const Path want{{0, 0, 0}, {2, 0, 0}, {4, 2, 0}, {4, 3, 0}};
   EXPECT_EQ(pruned, want);
+}
+
+// The ends of a grid path: the end cell's centre is replaced by the exact point when the
+// segment to the next centre keeps the clearance, and the point is joined to it otherwise; the
+// length is that of the world path.
+TEST(GridSpaceTest, EndsReplacedWhenFreeAndJoinedOtherwise) {
+  // Row 0 free; (1, 1) blocked, so the centre (1.5, 0.5) keeps 0.5 from it.
+  const MapPtr map = testing::GridMap({"...", ".#."});
+  Problem problem;
+  problem.map = map;
+  problem.clearance = 0.45;
+  problem.goal = Point3(2.5, 0.5, 0);
+  const std::vector<Cell> cells = {Cell{0, 0}, Cell{1, 0}, Cell{2, 0}};
+
+  problem.start = Point3(0.2, 0.3, 0);  // the segment to (1.5, 0.5) keeps the clearance
+  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, 0.0);
+  ASSERT_TRUE(space.ok()) << space.status();
+  Path path = space->WorldPath(cells);
+  EXPECT_EQ(path, (Path{problem.start, Point3(1.5, 0.5, 0), problem.goal}));
+  EXPECT_TRUE(space->PathFree(path));
+  EXPECT_NEAR(space->PathLength(cells), PathLength(path), 1e-12);
+
+  problem.start = Point3(0.2, 0.95, 0);  // it would pass 0.31 from the corner (1, 1)
+  space = MakeGridSpace(problem, 0.0);
+  ASSERT_TRUE(space.ok()) << space.status();
+  path = space->WorldPath(cells);
+  EXPECT_EQ(path, (Path{problem.start, Point3(0.5, 0.5, 0), Point3(1.5, 0.5, 0), problem.goal}));
+  EXPECT_TRUE(space->PathFree(path));
+  EXPECT_NEAR(space->PathLength(cells), PathLength(path), 1e-12);
+
+  // Start and goal in one cell: the segment between them.
+  problem.goal = Point3(0.4, 0.6, 0);
+  space = MakeGridSpace(problem, 0.0);
+  ASSERT_TRUE(space.ok()) << space.status();
+  EXPECT_EQ(space->WorldPath({Cell{0, 0}}), (Path{problem.start, problem.goal}));
+  EXPECT_NEAR(space->PathLength({Cell{0, 0}}), (problem.goal - problem.start).norm(), 1e-12);
 }
 
 }  // namespace

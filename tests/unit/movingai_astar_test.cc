@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "core/geometry/grid_collision.h"
+#include "core/geometry/primitives.h"
 #include "core/graph/grid_search.h"
 #include "core/graph/theta_star.h"
 #include "core/map/io/map_io.h"
@@ -110,6 +112,39 @@ TEST(MovingAiAStarTest, ThetaStarNoLongerThanOptimalGridPaths) {
       EXPECT_TRUE(checker.PathFree(CellPathToWorld(grid, r.cells), 0.0)) << "bucket " << s.bucket;
     }
   }
+}
+
+// A Theta* path on 8room_000 that passes 0.031 cells from a blocked corner: its reported
+// clearance is the exact distance to the nearest blocked square (brute force over every
+// square), never negative. Sphere tracing on the distance field reported -0.080 here.
+TEST(MovingAiAStarTest, ThetaStarClearanceIsExact) {
+  SWARMPLAN_REQUIRE_BENCHMARKS("movingai/8room_000.map");
+  const absl::StatusOr<Map> map =
+      LoadMapFile(::swarmplan::testing::BenchmarksDir() + "/movingai/8room_000.map");
+  ASSERT_TRUE(map.ok()) << map.status();
+  const OccupancyGrid& grid = *map->grid();
+  const GridCollisionChecker checker(grid);
+  const GridSearchResult r = ThetaStar(grid, checker, Cell{148, 116}, Cell{246, 39}, {});
+  ASSERT_TRUE(r.found);
+  const Path path = CellPathToWorld(grid, r.cells);
+  ASSERT_TRUE(checker.PathFree(path, 0.0));
+  double exact = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    for (int y = 0; y < grid.height(); ++y) {
+      for (int x = 0; x < grid.width(); ++x) {
+        if (!grid.IsBlocked(x, y)) continue;
+        const std::vector<Point2> square = {Point2(x, y), Point2(x + 1, y), Point2(x + 1, y + 1),
+                                            Point2(x, y + 1)};
+        exact = std::min(exact,
+                         SegmentPolygonDistance(path[i].head<2>(), path[i + 1].head<2>(), square));
+      }
+    }
+  }
+  const PathMetrics metrics = EvaluatePath(*map, path, 0.0);
+  EXPECT_TRUE(metrics.collision_free);
+  EXPECT_GT(metrics.min_clearance, 0.0);
+  EXPECT_NEAR(metrics.min_clearance, exact, 1e-12);
+  EXPECT_NEAR(metrics.min_clearance, 0.03119, 1e-5);
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ class FishSwarmSearch {
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
-    SetGridPath(problem_, *space_.grid, best_cells_, best_fitness_, result);
+    SetGridPath(space_, best_cells_, best_fitness_, result);
     if (best_cells_.empty()) result.fitness = best_fitness_;
     return result;
   }
@@ -123,7 +123,7 @@ class FishSwarmSearch {
   double Arrive(Fish& fish, int iteration) {
     std::vector<Cell> cells = fish.trail;
     RemoveLoops(cells);
-    const double length = CellPathLength(*space_.grid, cells);
+    const double length = space_.PathLength(cells);
     if (p_.feasible_solutions) {
       if (best_cells_.empty() || length < best_fitness_ - 1e-12) best_cells_ = cells;
       Offer(length, iteration);

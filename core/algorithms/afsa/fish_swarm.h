@@ -38,7 +38,7 @@ struct FishSwarmParams {
   double step_min = 1.4142135623730951;  // cells
   double step_max = 2.8284271247461903;  // cells
   double feedback_gain = 17.0;           // m of eq 9 (17 on 10x10, 10 on 20x20)
-  double resolution = 1.0;               // cell size on shape worlds (ours)
+  double resolution = 0.0;               // cell size on shape worlds; 0: automatic (ours)
 
   enum class Variant { kAfsa, kDafsa, kIdafsa };
   static FishSwarmParams Defaults(Variant variant);

@@ -46,7 +46,7 @@ class GridAcoSearch {
         std::vector<int> edges;
         ++evaluations_;
         if (Walk(cells, edges)) {
-          const double length = CellPathLength(*space_.grid, cells);
+          const double length = space_.PathLength(cells);
           sum += length;
           arrivals.push_back({std::move(edges), length});
           if (length < best_length_ - 1e-12) {
@@ -68,7 +68,7 @@ class GridAcoSearch {
     result.iterations = iteration;
     result.evaluations = evaluations_;
     result.convergence = log.Take();
-    SetGridPath(problem_, *space_.grid, best_cells_, best_length_, result);
+    SetGridPath(space_, best_cells_, best_length_, result);
     return result;
   }
 

@@ -55,8 +55,8 @@ class GridApfSearch {
       at = next;
       u = next_u;
       cells.push_back(at);
-      const double f = at == space_.goal ? CellPathLength(grid, cells)
-                                         : unreached_ + Dist(at) * grid.resolution();
+      const double f =
+          at == space_.goal ? space_.PathLength(cells) : unreached_ + Dist(at) * grid.resolution();
       if (f < best) {
         best = f;
         result.best_iteration = step;
@@ -67,9 +67,9 @@ class GridApfSearch {
     result.evaluations = evaluations_;
     result.convergence = log.Take();
     if (at == space_.goal && !stalled) {
-      SetGridPath(problem_, grid, cells, CellPathLength(grid, cells), result);
+      SetGridPath(space_, cells, space_.PathLength(cells), result);
     } else {
-      SetGridPath(problem_, grid, {}, best, result);
+      SetGridPath(space_, {}, best, result);
     }
     return result;
   }

@@ -24,7 +24,7 @@ struct GridGaParams {
   int mutation_radius = 3;             // cells around the sub-path's middle (ours)
   int max_waypoints = 3;               // ours
   bool allow_corner_cutting = false;
-  double resolution = 1.0;  // ours
+  double resolution = 0.0;  // shape-world cell size; 0: automatic (ours)
 
   static std::vector<ParamSpec> Specs();
   static GridGaParams From(const ParamSet& set);
@@ -47,7 +47,7 @@ struct GridAcoParams {
   int iterations = 100;  // ours
   double tau0 = 1.0;     // ours
   bool allow_corner_cutting = false;
-  double resolution = 1.0;  // ours
+  double resolution = 0.0;  // shape-world cell size; 0: automatic (ours)
 
   static std::vector<ParamSpec> Specs();
   static GridAcoParams From(const ParamSet& set);
@@ -68,7 +68,7 @@ struct GridApfParams {
   double influence = 3.0;  // ρ0, cells (ours)
   int max_steps = 100000;  // ours
   bool allow_corner_cutting = false;
-  double resolution = 1.0;  // ours
+  double resolution = 0.0;  // shape-world cell size; 0: automatic (ours)
 
   static std::vector<ParamSpec> Specs();
   static GridApfParams From(const ParamSet& set);

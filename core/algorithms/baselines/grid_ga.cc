@@ -72,7 +72,7 @@ class GridGaSearch {
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
-    SetGridPath(problem_, grid, best_.cells, best_.length, result);
+    SetGridPath(space_, best_.cells, best_.length, result);
     return result;
   }
 
@@ -81,7 +81,7 @@ class GridGaSearch {
 
   void Evaluate(Individual& ind, int generation) {
     ++evaluations_;
-    ind.length = CellPathLength(*space_.grid, ind.cells);
+    ind.length = space_.PathLength(ind.cells);
     if (best_.cells.empty() || ind.length < best_.length - 1e-12) {
       best_ = ind;
       best_iteration_ = generation;

@@ -82,7 +82,7 @@ class AsBfoSearch {
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
-    SetGridPath(problem_, grid, best_.cells, best_.cost, result);
+    SetGridPath(space_, best_.cells, best_.cost, result);
     return result;
   }
 
@@ -92,7 +92,7 @@ class AsBfoSearch {
 
   double Evaluate(const std::vector<Cell>& cells) {
     ++evaluations_;
-    return CellPathLength(*space_.grid, cells);
+    return space_.PathLength(cells);
   }
 
   void Offer(const Bacterium& b, int iteration) {

@@ -25,7 +25,7 @@ struct AsBfoParams {
   int max_waypoints = 3;                  // random cells an initial path passes through (ours)
   bool keep_worse_tumbles = true;         // classic BFO moves even when the tumble is worse (ours)
   bool allow_corner_cutting = false;
-  double resolution = 1.0;  // cell size when planning on a shape world (ours)
+  double resolution = 0.0;  // cell size when planning on a shape world; 0: automatic (ours)
 
   static std::vector<ParamSpec> Specs();
   static AsBfoParams From(const ParamSet& set);

@@ -82,15 +82,15 @@ absl::Status CheckEndCell(const OccupancyGrid& grid, Cell cell, double clearance
   if (CellUsable(grid, cell, clearance)) return absl::OkStatus();
   if (!grid.InBounds(cell)) {
     return absl::FailedPreconditionError(
-        absl::StrCat(field, " cell ", cell.x, ",", cell.y, " is outside the grid"));
+        absl::StrCat(field, " cell (", cell.x, ", ", cell.y, ") is outside the grid"));
   }
   if (grid.IsBlocked(cell)) {
     return absl::FailedPreconditionError(
-        absl::StrCat(field, " cell ", cell.x, ",", cell.y, " is blocked"));
+        absl::StrCat(field, " cell (", cell.x, ", ", cell.y, ") is blocked"));
   }
   return absl::FailedPreconditionError(absl::StrCat(
-      field, " cell ", cell.x, ",", cell.y, ": its centre is closer than the clearance ", clearance,
-      " to a blocked cell (clearance there: ", CellCenterClearance(grid, cell), ")"));
+      field, " cell (", cell.x, ", ", cell.y, "): its centre is closer than the clearance ",
+      clearance, " to a blocked cell (clearance there: ", CellCenterClearance(grid, cell), ")"));
 }
 
 // A* (heuristic), Dijkstra (none) or Theta* (any-angle) over the grid's cells.
@@ -108,16 +108,31 @@ class GridSearchPlanner final : public Planner {
     GridSearchOptions options = options_;
     options.clearance = problem.clearance;
     options.stop = &stop;
+    if (absl::Status s = CheckProblem(problem); !s.ok()) return s;
     const Cell from = (*grid)->CellAt(problem.start.head<2>());
     const Cell to = (*grid)->CellAt(problem.goal.head<2>());
-    if (absl::Status s = CheckEndCell(**grid, from, problem.clearance, "start"); !s.ok()) return s;
-    if (absl::Status s = CheckEndCell(**grid, to, problem.clearance, "goal"); !s.ok()) return s;
     const GridSearchResult search =
         any_angle_ ? ThetaStar(**grid, GridCollisionChecker(**grid), from, to, options, &context_)
                    : SearchGrid(**grid, from, to, options, &context_);
     if (search.stopped) return Stopped(stop.Check(0));
-    return FinishSearch(GridPathFromTo(**grid, search.cells, problem.start, problem.goal),
-                        search.expanded, started, observer);
+    Path path = GridPathFromTo(**grid, search.cells, problem.start, problem.goal);
+    // The joins to off-centre endpoints are checked like the rest (the cells' centres keep the
+    // clearance, but a join between a centre and a point may pass closer to a corner).
+    if (!GridCollisionChecker(**grid).PathFree(path, problem.clearance)) path.clear();
+    return FinishSearch(std::move(path), search.expanded, started, observer);
+  }
+
+  // The search runs between cells: the start and goal cells must be usable.
+  absl::Status CheckProblem(const Problem& problem) const override {
+    absl::StatusOr<const OccupancyGrid*> grid = RequireGrid(problem, id_);
+    if (!grid.ok()) return grid.status();
+    const OccupancyGrid& g = **grid;
+    if (absl::Status s =
+            CheckEndCell(g, g.CellAt(problem.start.head<2>()), problem.clearance, "start");
+        !s.ok()) {
+      return s;
+    }
+    return CheckEndCell(g, g.CellAt(problem.goal.head<2>()), problem.clearance, "goal");
   }
 
  private:
