@@ -71,17 +71,16 @@ JobManager::JobManager(const ServerConfig& config, const Registry& registry, Map
     : config_(config), registry_(registry), maps_(maps), store_(store), metrics_(metrics) {
   const int workers =
       config.workers > 0 ? config.workers : std::max(1u, std::thread::hardware_concurrency());
-  queue_ = std::make_unique<JobQueue>(workers, config.queue_capacity,
-                                      [this](const JobPtr& job) { Execute(job); });
-  UpdateGauges();
+  queue_ = std::make_unique<JobQueue>(
+      workers, config.queue_capacity, [this](const JobPtr& job) { Execute(job); },
+      [this](int depth, int busy) {
+        metrics_.SetQueueDepth(depth);
+        metrics_.SetWorkersBusy(busy);
+      });
+  metrics_.SetWorkers(queue_->workers());
 }
 
 JobManager::~JobManager() { queue_->Stop(); }
-
-void JobManager::UpdateGauges() {
-  metrics_.SetQueueDepth(queue_->depth());
-  metrics_.SetWorkers(queue_->busy(), queue_->workers());
-}
 
 absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, uint64_t seed,
                                                 std::string* map_name) const {
@@ -168,7 +167,6 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     job->events.Publish(std::move(accepted));
   }
   Add(job);
-  UpdateGauges();
   return Submitted{job, false};
 }
 
@@ -253,7 +251,6 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
       }
     }
   }
-  UpdateGauges();
   return Snapshot(**job, /*with_result=*/true);
 }
 
@@ -381,7 +378,6 @@ absl::Status JobManager::Recover() {
     Add(job);
   }
   if (requeued > 0) spdlog::info("recovered {} unfinished jobs; queued again", requeued);
-  UpdateGauges();
   return absl::OkStatus();
 }
 

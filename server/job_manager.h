@@ -70,7 +70,6 @@ class JobManager {
   void Persist(Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
   void Add(const JobPtr& job);
   void SweepExpired();
-  void UpdateGauges();
 
   const ServerConfig config_;
   const Registry& registry_;
