@@ -144,6 +144,28 @@ TEST(OperationsTest, HealthCheckSaysServing) {
   EXPECT_EQ(response, std::string("\x08\x01", 2));
 }
 
+TEST(OperationsTest, HealthCheckOfEachServiceSaysServing) {
+  TempDir dir;
+  TestServer server(dir.path());
+  for (const std::string service :
+       {"swarmplan.v1.MapService", "swarmplan.v1.JobService", "swarmplan.v1.AlgorithmService"}) {
+    SCOPED_TRACE(service);
+    // HealthCheckRequest{service}: field 1, length-delimited.
+    const std::string request =
+        std::string("\x0a", 1) + static_cast<char>(service.size()) + service;
+    std::string response;
+    grpc::Status status =
+        RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", request, &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    EXPECT_EQ(response, std::string("\x08\x01", 2));
+  }
+  std::string response;
+  const std::string unknown = std::string("\x0a\x0d", 2) + "no.SuchThing1";
+  EXPECT_EQ(
+      RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", unknown, &response).error_code(),
+      grpc::StatusCode::NOT_FOUND);
+}
+
 TEST(OperationsTest, ReflectionListsTheSwarmplanServices) {
   TempDir dir;
   TestServer server(dir.path());
