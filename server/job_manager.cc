@@ -10,8 +10,10 @@
 #include "absl/strings/str_join.h"
 #include "absl/time/clock.h"
 #include "core/random.h"
+#include "google/protobuf/util/message_differencer.h"
 #include "server/ids.h"
 #include "server/proto_convert.h"
+#include "server/request_validation.h"
 
 namespace swarmplan::server {
 namespace {
@@ -37,10 +39,11 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& para
         absl::StrCat("limits.max_iterations: ", request.limits().max_iterations(),
                      " exceeds the server's limit of ", config.max_iterations));
   }
-  const absl::Duration budget = FromProto(request.limits().time_budget());
-  if (budget < absl::ZeroDuration()) {
-    return absl::InvalidArgumentError("limits.time_budget: must not be negative");
+  if (absl::Status s = CheckDuration("limits.time_budget", request.limits().time_budget());
+      !s.ok()) {
+    return s;
   }
+  const absl::Duration budget = FromProto(request.limits().time_budget());
   if (budget > config.max_job_time) {
     return absl::InvalidArgumentError(
         absl::StrCat("limits.time_budget: ", absl::FormatDuration(budget),
@@ -49,8 +52,9 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& para
   if (request.progress().every_iterations() < 0) {
     return absl::InvalidArgumentError("progress.every_iterations: must be >= 0");
   }
-  if (FromProto(request.progress().min_interval()) < absl::ZeroDuration()) {
-    return absl::InvalidArgumentError("progress.min_interval: must not be negative");
+  if (absl::Status s = CheckDuration("progress.min_interval", request.progress().min_interval());
+      !s.ok()) {
+    return s;
   }
   for (const auto& [name, value] : params) {
     if (!IsPopulationParameter(name)) continue;
@@ -62,6 +66,16 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const ParamValues& para
     }
   }
   return absl::OkStatus();
+}
+
+// A reused client_request_id names the same request when every field but `detached` (how the
+// caller follows the job, not what it plans) is equal.
+bool SameRequest(const v1::PlanRequest& a, const v1::PlanRequest& b) {
+  v1::PlanRequest x = a;
+  v1::PlanRequest y = b;
+  x.clear_detached();
+  y.clear_detached();
+  return google::protobuf::util::MessageDifferencer::Equals(x, y);
 }
 
 }  // namespace
@@ -133,7 +147,14 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     absl::MutexLock lock(&mu_);
     if (auto it = by_client_request_id_.find(request.client_request_id());
         it != by_client_request_id_.end()) {
-      return Submitted{jobs_.at(it->second), true};
+      JobPtr first = jobs_.at(it->second);
+      absl::MutexLock job_lock(&first->mu);
+      if (!SameRequest(first->record.request(), request)) {
+        return absl::AlreadyExistsError(
+            absl::StrCat("client_request_id: already used by job ", first->id,
+                         " for a different request; a new request needs a new client_request_id"));
+      }
+      return Submitted{first, true};
     }
   }
   const uint64_t seed = request.seed() != 0 ? request.seed() : PickSeed();

@@ -1,5 +1,6 @@
 #include "server/grpc_status.h"
 #include "server/job_event_stream.h"
+#include "server/request_validation.h"
 #include "server/services.h"
 
 namespace swarmplan::server {
@@ -55,6 +56,9 @@ grpc::ServerUnaryReactor* JobServiceImpl::ListJobs(grpc::CallbackServerContext* 
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
   absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
   if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
+  if (absl::Status s = CheckStateFilter(request->states()); !s.ok()) {
+    return FinishUnary(context, ToGrpcStatus(s));
+  }
   std::vector<v1::JobState> states;
   for (int s : request->states()) states.push_back(static_cast<v1::JobState>(s));
   std::string next;

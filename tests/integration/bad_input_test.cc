@@ -111,6 +111,21 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
       {"time budget above the server limit",
        [](auto& r) { r.mutable_limits()->mutable_time_budget()->set_seconds(61); },
        C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"time budget nanos above a second",
+       [](auto& r) { r.mutable_limits()->mutable_time_budget()->set_nanos(2000000000); },
+       C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"time budget with seconds and nanos of opposite signs",
+       [](auto& r) {
+         r.mutable_limits()->mutable_time_budget()->set_seconds(1);
+         r.mutable_limits()->mutable_time_budget()->set_nanos(-1);
+       },
+       C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"progress interval nanos below minus a second",
+       [](auto& r) { r.mutable_progress()->mutable_min_interval()->set_nanos(-1000000000); },
+       C::INVALID_ARGUMENT, "progress.min_interval"},
+      {"negative progress interval",
+       [](auto& r) { r.mutable_progress()->mutable_min_interval()->set_nanos(-5); },
+       C::INVALID_ARGUMENT, "progress.min_interval"},
       {"negative progress rate", [](auto& r) { r.mutable_progress()->set_every_iterations(-2); },
        C::INVALID_ARGUMENT, "progress.every_iterations"},
       {"unknown smoothing", [](auto& r) { r.set_smoothing("sandpaper"); }, C::INVALID_ARGUMENT,
@@ -152,6 +167,21 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
   ASSERT_TRUE(server_.jobs().ListJobs(&context, {}, &jobs).ok());
   EXPECT_EQ(jobs.jobs_size(), 0);  // nothing was queued
   ExpectHealthyAndNothingLost();
+}
+
+TEST_F(BadInputTest, ListJobsRefusesAStateFilterOutsideTheEnum) {
+  for (int state : {99, -1, 0}) {
+    SCOPED_TRACE(state);
+    v1::ListJobsRequest request;
+    request.add_states(v1::JOB_STATE_SUCCEEDED);
+    request.add_states(static_cast<v1::JobState>(state));
+    v1::ListJobsResponse response;
+    grpc::ClientContext context;
+    grpc::Status status = server_.jobs().ListJobs(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("states[1]"), std::string::npos)
+        << status.error_message();
+  }
 }
 
 TEST_F(BadInputTest, EveryBadUploadGetsTheRightCodeAndNamesTheFieldOrFile) {
