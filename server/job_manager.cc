@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <optional>
 #include <thread>
 
 #include "absl/status/status.h"
@@ -78,6 +79,18 @@ bool SameRequest(const v1::PlanRequest& a, const v1::PlanRequest& b) {
   return google::protobuf::util::MessageDifferencer::Equals(x, y);
 }
 
+// Where a job stands in listings.
+PageKey KeyOf(const Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu) {
+  return PageKey{absl::ToUnixMicros(FromProto(job.record.created_at())), job.id};
+}
+
+// Tokens of a listing with one filter are not accepted by a listing with another.
+std::string ListScope(std::vector<v1::JobState> states) {
+  std::sort(states.begin(), states.end());
+  states.erase(std::unique(states.begin(), states.end()), states.end());
+  return absl::StrCat("jobs:", absl::StrJoin(states, ","));
+}
+
 }  // namespace
 
 JobManager::JobManager(const ServerConfig& config, const Registry& registry, MapCatalog& maps,
@@ -133,8 +146,8 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
 void JobManager::Add(const JobPtr& job) {
   absl::MutexLock lock(&mu_);
   jobs_[job->id] = job;
-  order_.push_back(job->id);
   absl::MutexLock job_lock(&job->mu);
+  order_[KeyOf(*job)] = job->id;
   if (!job->record.request().client_request_id().empty()) {
     by_client_request_id_[job->record.request().client_request_id()] = job->id;
   }
@@ -228,32 +241,38 @@ v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
   return out;
 }
 
-std::vector<v1::Job> JobManager::List(const std::vector<v1::JobState>& states, int page_size,
-                                      const std::string& page_token,
-                                      std::string* next_page_token) const {
+absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState>& states,
+                                                  int page_size,
+                                                  const std::string& page_token) const {
+  const std::string scope = ListScope(states);
+  std::optional<PageKey> before;
+  if (!page_token.empty()) {
+    absl::StatusOr<PageKey> key = DecodePageToken(page_token, scope);
+    if (!key.ok()) return key.status();
+    before = std::move(*key);
+  }
   std::vector<JobPtr> candidates;
   {
     absl::MutexLock lock(&mu_);
-    auto it = order_.rbegin();
-    if (!page_token.empty()) {
-      it = std::find(order_.rbegin(), order_.rend(), page_token);
-      if (it != order_.rend()) ++it;
+    auto end = before.has_value() ? order_.lower_bound(*before) : order_.end();
+    for (auto it = std::make_reverse_iterator(end); it != order_.rend(); ++it) {
+      candidates.push_back(jobs_.at(it->second));
     }
-    for (; it != order_.rend(); ++it) candidates.push_back(jobs_.at(*it));
   }
-  std::vector<v1::Job> page;
-  next_page_token->clear();
+  Page page;
+  PageKey last;
   for (const JobPtr& job : candidates) {
     v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
     if (!states.empty() &&
         std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
       continue;
     }
-    if (static_cast<int>(page.size()) == page_size) {
-      *next_page_token = page.back().id();
+    if (static_cast<int>(page.jobs.size()) == page_size) {
+      page.next_page_token = EncodePageToken(last, scope);
       break;
     }
-    page.push_back(std::move(snapshot));
+    last = PageKey{absl::ToUnixMicros(FromProto(snapshot.created_at())), snapshot.id()};
+    page.jobs.push_back(std::move(snapshot));
   }
   return page;
 }
@@ -335,9 +354,9 @@ void JobManager::SweepExpired() {
     spdlog::warn("cannot delete expired jobs: {}", n.status().ToString());
   }
   absl::MutexLock lock(&mu_);
-  for (const std::string& id : expired) {
-    jobs_.erase(id);
-    order_.erase(std::remove(order_.begin(), order_.end(), id), order_.end());
+  for (const std::string& id : expired) jobs_.erase(id);
+  for (auto it = order_.begin(); it != order_.end();) {
+    it = jobs_.count(it->second) ? std::next(it) : order_.erase(it);
   }
   for (auto it = by_client_request_id_.begin(); it != by_client_request_id_.end();) {
     it = jobs_.count(it->second) ? std::next(it) : by_client_request_id_.erase(it);

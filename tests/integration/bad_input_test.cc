@@ -184,6 +184,35 @@ TEST_F(BadInputTest, ListJobsRefusesAStateFilterOutsideTheEnum) {
   }
 }
 
+TEST_F(BadInputTest, GarbageAndTamperedPageTokensAreInvalidArguments) {
+  v1::ListMapsRequest first_maps;
+  first_maps.set_page_size(1);
+  v1::ListMapsResponse maps;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(server_.maps().ListMaps(&context, first_maps, &maps).ok());
+    ASSERT_FALSE(maps.next_page_token().empty());
+  }
+  std::string tampered = maps.next_page_token();
+  tampered[tampered.size() / 2] = tampered[tampered.size() / 2] == 'A' ? 'B' : 'A';
+  for (const std::string& token : {std::string("garbage"), tampered, grid_id_}) {
+    SCOPED_TRACE(token);
+    v1::ListMapsRequest request;
+    request.set_page_token(token);
+    grpc::ClientContext c1, c2;
+    grpc::Status status = server_.maps().ListMaps(&c1, request, &maps);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("page_token"), std::string::npos);
+    v1::ListJobsRequest jobs_request;
+    jobs_request.set_page_token(token);
+    v1::ListJobsResponse jobs;
+    status = server_.jobs().ListJobs(&c2, jobs_request, &jobs);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("page_token"), std::string::npos);
+  }
+  ExpectHealthyAndNothingLost();
+}
+
 TEST_F(BadInputTest, EveryBadUploadGetsTheRightCodeAndNamesTheFieldOrFile) {
   using C = grpc::StatusCode;
   auto file = [](const char* format, const char* name, std::string content) {
