@@ -83,7 +83,6 @@ void JobManager::Execute(const JobPtr& job) {
                  job->plan.algorithm, job->record.request().map_id(),
                  absl::ToDoubleSeconds(now - job->queued_at));
   }
-  UpdateGauges();
 
   const v1::ProgressOptions& progress = job->record.request().progress();
   ProgressPublisher publisher(*job, progress.every_iterations(),
@@ -110,7 +109,6 @@ void JobManager::Execute(const JobPtr& job) {
       Finish(*job, FinalState(*result, job->cancel_cause), &*result, "");
     }
   }
-  UpdateGauges();
   SweepExpired();
 }
 

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <optional>
 #include <thread>
 
 #include "absl/status/status.h"
@@ -10,8 +11,10 @@
 #include "absl/strings/str_join.h"
 #include "absl/time/clock.h"
 #include "core/random.h"
+#include "google/protobuf/util/message_differencer.h"
 #include "server/ids.h"
 #include "server/proto_convert.h"
+#include "server/request_validation.h"
 
 namespace swarmplan::server {
 namespace {
@@ -39,10 +42,11 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const PlannerInfo* plan
         absl::StrCat("limits.max_iterations: ", request.limits().max_iterations(),
                      " exceeds the server's limit of ", config.max_iterations));
   }
-  const absl::Duration budget = FromProto(request.limits().time_budget());
-  if (budget < absl::ZeroDuration()) {
-    return absl::InvalidArgumentError("limits.time_budget: must not be negative");
+  if (absl::Status s = CheckDuration("limits.time_budget", request.limits().time_budget());
+      !s.ok()) {
+    return s;
   }
+  const absl::Duration budget = FromProto(request.limits().time_budget());
   if (budget > config.max_job_time) {
     return absl::InvalidArgumentError(
         absl::StrCat("limits.time_budget: ", absl::FormatDuration(budget),
@@ -51,8 +55,9 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const PlannerInfo* plan
   if (request.progress().every_iterations() < 0) {
     return absl::InvalidArgumentError("progress.every_iterations: must be >= 0");
   }
-  if (FromProto(request.progress().min_interval()) < absl::ZeroDuration()) {
-    return absl::InvalidArgumentError("progress.min_interval: must not be negative");
+  if (absl::Status s = CheckDuration("progress.min_interval", request.progress().min_interval());
+      !s.ok()) {
+    return s;
   }
   for (const auto& [name, value] : params) {
     if (!IsPopulationSize(planner, name)) continue;
@@ -64,6 +69,28 @@ absl::Status CheckLimits(const v1::PlanRequest& request, const PlannerInfo* plan
     }
   }
   return absl::OkStatus();
+}
+
+// A reused client_request_id names the same request when every field but `detached` (how the
+// caller follows the job, not what it plans) is equal.
+bool SameRequest(const v1::PlanRequest& a, const v1::PlanRequest& b) {
+  v1::PlanRequest x = a;
+  v1::PlanRequest y = b;
+  x.clear_detached();
+  y.clear_detached();
+  return google::protobuf::util::MessageDifferencer::Equals(x, y);
+}
+
+// Where a job stands in listings.
+PageKey KeyOf(const Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu) {
+  return PageKey{absl::ToUnixMicros(FromProto(job.record.created_at())), job.id};
+}
+
+// Tokens of a listing with one filter are not accepted by a listing with another.
+std::string ListScope(std::vector<v1::JobState> states) {
+  std::sort(states.begin(), states.end());
+  states.erase(std::unique(states.begin(), states.end()), states.end());
+  return absl::StrCat("jobs:", absl::StrJoin(states, ","));
 }
 
 }  // namespace
@@ -78,17 +105,16 @@ JobManager::JobManager(const ServerConfig& config, const Registry& registry, Map
       optima_(registry, config.optimum_budget, kOptimumCacheEntries) {
   const int workers =
       config.workers > 0 ? config.workers : std::max(1u, std::thread::hardware_concurrency());
-  queue_ = std::make_unique<JobQueue>(workers, config.queue_capacity,
-                                      [this](const JobPtr& job) { Execute(job); });
-  UpdateGauges();
+  queue_ = std::make_unique<JobQueue>(
+      workers, config.queue_capacity, [this](const JobPtr& job) { Execute(job); },
+      [this](int depth, int busy) {
+        metrics_.SetQueueDepth(depth);
+        metrics_.SetWorkersBusy(busy);
+      });
+  metrics_.SetWorkers(queue_->workers());
 }
 
 JobManager::~JobManager() { queue_->Stop(); }
-
-void JobManager::UpdateGauges() {
-  metrics_.SetQueueDepth(queue_->depth());
-  metrics_.SetWorkers(queue_->busy(), queue_->workers());
-}
 
 absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, uint64_t seed,
                                                 std::string* map_name) const {
@@ -130,8 +156,8 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
 void JobManager::Add(const JobPtr& job) {
   absl::MutexLock lock(&mu_);
   jobs_[job->id] = job;
-  order_.push_back(job->id);
   absl::MutexLock job_lock(&job->mu);
+  order_[KeyOf(*job)] = job->id;
   if (!job->record.request().client_request_id().empty()) {
     by_client_request_id_[job->record.request().client_request_id()] = job->id;
   }
@@ -144,7 +170,14 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     absl::MutexLock lock(&mu_);
     if (auto it = by_client_request_id_.find(request.client_request_id());
         it != by_client_request_id_.end()) {
-      return Submitted{jobs_.at(it->second), true};
+      JobPtr first = jobs_.at(it->second);
+      absl::MutexLock job_lock(&first->mu);
+      if (!SameRequest(first->record.request(), request)) {
+        return absl::AlreadyExistsError(
+            absl::StrCat("client_request_id: already used by job ", first->id,
+                         " for a different request; a new request needs a new client_request_id"));
+      }
+      return Submitted{first, true};
     }
   }
   const uint64_t seed = request.seed() != 0 ? request.seed() : PickSeed();
@@ -178,7 +211,6 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     job->events.Publish(std::move(accepted));
   }
   Add(job);
-  UpdateGauges();
   return Submitted{job, false};
 }
 
@@ -219,32 +251,38 @@ v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
   return out;
 }
 
-std::vector<v1::Job> JobManager::List(const std::vector<v1::JobState>& states, int page_size,
-                                      const std::string& page_token,
-                                      std::string* next_page_token) const {
+absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState>& states,
+                                                  int page_size,
+                                                  const std::string& page_token) const {
+  const std::string scope = ListScope(states);
+  std::optional<PageKey> before;
+  if (!page_token.empty()) {
+    absl::StatusOr<PageKey> key = DecodePageToken(page_token, scope);
+    if (!key.ok()) return key.status();
+    before = std::move(*key);
+  }
   std::vector<JobPtr> candidates;
   {
     absl::MutexLock lock(&mu_);
-    auto it = order_.rbegin();
-    if (!page_token.empty()) {
-      it = std::find(order_.rbegin(), order_.rend(), page_token);
-      if (it != order_.rend()) ++it;
+    auto end = before.has_value() ? order_.lower_bound(*before) : order_.end();
+    for (auto it = std::make_reverse_iterator(end); it != order_.rend(); ++it) {
+      candidates.push_back(jobs_.at(it->second));
     }
-    for (; it != order_.rend(); ++it) candidates.push_back(jobs_.at(*it));
   }
-  std::vector<v1::Job> page;
-  next_page_token->clear();
+  Page page;
+  PageKey last;
   for (const JobPtr& job : candidates) {
     v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
     if (!states.empty() &&
         std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
       continue;
     }
-    if (static_cast<int>(page.size()) == page_size) {
-      *next_page_token = page.back().id();
+    if (static_cast<int>(page.jobs.size()) == page_size) {
+      page.next_page_token = EncodePageToken(last, scope);
       break;
     }
-    page.push_back(std::move(snapshot));
+    last = PageKey{absl::ToUnixMicros(FromProto(snapshot.created_at())), snapshot.id()};
+    page.jobs.push_back(std::move(snapshot));
   }
   return page;
 }
@@ -263,7 +301,6 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
       }
     }
   }
-  UpdateGauges();
   return Snapshot(**job, /*with_result=*/true);
 }
 
@@ -327,9 +364,9 @@ void JobManager::SweepExpired() {
     spdlog::warn("cannot delete expired jobs: {}", n.status().ToString());
   }
   absl::MutexLock lock(&mu_);
-  for (const std::string& id : expired) {
-    jobs_.erase(id);
-    order_.erase(std::remove(order_.begin(), order_.end(), id), order_.end());
+  for (const std::string& id : expired) jobs_.erase(id);
+  for (auto it = order_.begin(); it != order_.end();) {
+    it = jobs_.count(it->second) ? std::next(it) : order_.erase(it);
   }
   for (auto it = by_client_request_id_.begin(); it != by_client_request_id_.end();) {
     it = jobs_.count(it->second) ? std::next(it) : by_client_request_id_.erase(it);
@@ -391,7 +428,6 @@ absl::Status JobManager::Recover() {
     Add(job);
   }
   if (requeued > 0) spdlog::info("recovered {} unfinished jobs; queued again", requeued);
-  UpdateGauges();
   return absl::OkStatus();
 }
 

@@ -16,6 +16,7 @@
 #include "server/map_catalog.h"
 #include "server/metrics.h"
 #include "server/optimum_cache.h"
+#include "server/page_token.h"
 #include "server/store.h"
 
 namespace swarmplan::server {
@@ -44,9 +45,14 @@ class JobManager {
   absl::StatusOr<JobPtr> Find(const std::string& id) const;
   // The job as clients see it, with its live queue position.
   v1::Job Snapshot(Job& job, bool with_result) const;
-  // Newest first; `page_token` is the id after which to continue.
-  std::vector<v1::Job> List(const std::vector<v1::JobState>& states, int page_size,
-                            const std::string& page_token, std::string* next_page_token) const;
+  struct Page {
+    std::vector<v1::Job> jobs;
+    std::string next_page_token;  // empty on the last page
+  };
+  // Newest first (by creation time, then id), continuing after `page_token`. INVALID_ARGUMENT
+  // naming page_token for a token List did not issue for these states.
+  absl::StatusOr<Page> List(const std::vector<v1::JobState>& states, int page_size,
+                            const std::string& page_token) const;
   absl::StatusOr<v1::Job> Cancel(const std::string& id);
 
   // A stream on `job` ended; `remaining` watchers are left. When the job's own Plan call ended
@@ -71,7 +77,6 @@ class JobManager {
   void Persist(Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
   void Add(const JobPtr& job);
   void SweepExpired();
-  void UpdateGauges();
 
   const ServerConfig config_;
   const Registry& registry_;
@@ -82,7 +87,7 @@ class JobManager {
 
   mutable absl::Mutex mu_;
   std::map<std::string, JobPtr> jobs_ ABSL_GUARDED_BY(mu_);
-  std::vector<std::string> order_ ABSL_GUARDED_BY(mu_);  // creation order
+  std::map<PageKey, std::string> order_ ABSL_GUARDED_BY(mu_);  // listing order of jobs_
   std::map<std::string, std::string> by_client_request_id_ ABSL_GUARDED_BY(mu_);
   absl::Time last_sweep_ ABSL_GUARDED_BY(mu_) = absl::InfinitePast();
   absl::Mutex submit_mu_;  // makes client_request_id dedupe atomic

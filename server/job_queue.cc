@@ -7,8 +7,8 @@
 
 namespace swarmplan::server {
 
-JobQueue::JobQueue(int workers, int capacity, RunFn run)
-    : capacity_(capacity), run_(std::move(run)) {
+JobQueue::JobQueue(int workers, int capacity, RunFn run, LoadFn on_load)
+    : capacity_(capacity), run_(std::move(run)), on_load_(std::move(on_load)) {
   for (int i = 0; i < std::max(workers, 1); ++i) threads_.emplace_back([this] { WorkerLoop(); });
 }
 
@@ -23,6 +23,7 @@ absl::StatusOr<int> JobQueue::Push(JobPtr job, bool ignore_capacity) {
                      " running); retry later or raise --queue-capacity"));
   }
   queue_.push_back(std::move(job));
+  ReportLoad();
   return static_cast<int>(queue_.size()) - 1;
 }
 
@@ -32,6 +33,7 @@ bool JobQueue::Remove(const std::string& id) {
       std::find_if(queue_.begin(), queue_.end(), [&](const JobPtr& j) { return j->id == id; });
   if (it == queue_.end()) return false;
   queue_.erase(it);
+  ReportLoad();
   return true;
 }
 
@@ -83,11 +85,17 @@ void JobQueue::WorkerLoop() {
       job = std::move(queue_.front());
       queue_.pop_front();
       ++busy_;
+      ReportLoad();
     }
     run_(job);
     absl::MutexLock lock(&mu_);
     --busy_;
+    ReportLoad();
   }
+}
+
+void JobQueue::ReportLoad() {
+  if (on_load_) on_load_(static_cast<int>(queue_.size()), busy_);
 }
 
 }  // namespace swarmplan::server

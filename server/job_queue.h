@@ -17,8 +17,11 @@ namespace swarmplan::server {
 class JobQueue {
  public:
   using RunFn = std::function<void(const JobPtr&)>;
+  // Told the queue depth and the busy workers after every change of either, under the queue's
+  // lock (so in order); it must not call back into the queue.
+  using LoadFn = std::function<void(int depth, int busy)>;
 
-  JobQueue(int workers, int capacity, RunFn run);
+  JobQueue(int workers, int capacity, RunFn run, LoadFn on_load = nullptr);
   ~JobQueue();  // Stop()
   JobQueue(const JobQueue&) = delete;
   JobQueue& operator=(const JobQueue&) = delete;
@@ -45,9 +48,11 @@ class JobQueue {
 
  private:
   void WorkerLoop();
+  void ReportLoad() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
 
   const int capacity_;
   const RunFn run_;
+  const LoadFn on_load_;
   mutable absl::Mutex mu_;
   std::deque<JobPtr> queue_ ABSL_GUARDED_BY(mu_);
   int busy_ ABSL_GUARDED_BY(mu_) = 0;

@@ -1,5 +1,6 @@
 #include "server/grpc_status.h"
 #include "server/job_event_stream.h"
+#include "server/request_validation.h"
 #include "server/services.h"
 
 namespace swarmplan::server {
@@ -55,13 +56,15 @@ grpc::ServerUnaryReactor* JobServiceImpl::ListJobs(grpc::CallbackServerContext* 
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
   absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
   if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
+  if (absl::Status s = CheckStateFilter(request->states()); !s.ok()) {
+    return FinishUnary(context, ToGrpcStatus(s));
+  }
   std::vector<v1::JobState> states;
   for (int s : request->states()) states.push_back(static_cast<v1::JobState>(s));
-  std::string next;
-  for (v1::Job& job : jobs_.List(states, *page_size, request->page_token(), &next)) {
-    *response->add_jobs() = std::move(job);
-  }
-  response->set_next_page_token(next);
+  absl::StatusOr<JobManager::Page> page = jobs_.List(states, *page_size, request->page_token());
+  if (!page.ok()) return FinishUnary(context, ToGrpcStatus(page.status()));
+  for (v1::Job& job : page->jobs) *response->add_jobs() = std::move(job);
+  response->set_next_page_token(page->next_page_token);
   return FinishUnary(context, grpc::Status::OK);
 }
 

@@ -1,6 +1,7 @@
 #include "server/map_catalog.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
@@ -27,6 +28,13 @@ absl::StatusOr<std::shared_ptr<const CatalogEntry>> MakeEntry(const StoredMap& s
   entry->map = std::make_shared<const Map>(std::move(*map));
   return entry;
 }
+
+// Where a map stands in listings.
+PageKey KeyOf(const CatalogEntry& entry) {
+  return PageKey{absl::ToUnixMicros(FromProto(entry.info.created_at())), entry.info.id()};
+}
+
+constexpr char kListScope[] = "maps";
 
 }  // namespace
 
@@ -79,7 +87,10 @@ absl::StatusOr<MapCatalog::UploadResult> MapCatalog::Upload(const std::string& n
   if (!entry.ok()) return entry.status();
   if (absl::Status s = store_.PutMap(stored); !s.ok()) return s;
   absl::MutexLock lock(&mu_);
-  entries_.push_back(*entry);
+  const PageKey key = KeyOf(**entry);
+  entries_.insert(std::upper_bound(entries_.begin(), entries_.end(), key,
+                                   [](const PageKey& k, const auto& e) { return k < KeyOf(*e); }),
+                  *entry);
   return UploadResult{(*entry)->info, true};
 }
 
@@ -102,22 +113,27 @@ absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const
   return source;
 }
 
-std::vector<v1::MapInfo> MapCatalog::List(int page_size, const std::string& page_token,
-                                          std::string* next_page_token) const {
-  absl::MutexLock lock(&mu_);
-  size_t begin = 0;
+absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size,
+                                                  const std::string& page_token) const {
+  std::optional<PageKey> after;
   if (!page_token.empty()) {
-    auto it = std::find_if(entries_.begin(), entries_.end(),
-                           [&](const auto& e) { return e->info.id() == page_token; });
-    begin = it == entries_.end() ? entries_.size() : (it - entries_.begin()) + 1;
+    absl::StatusOr<PageKey> key = DecodePageToken(page_token, kListScope);
+    if (!key.ok()) return key.status();
+    after = std::move(*key);
   }
-  std::vector<v1::MapInfo> page;
-  size_t i = begin;
-  for (; i < entries_.size() && static_cast<int>(page.size()) < page_size; ++i) {
-    page.push_back(entries_[i]->info);
+  absl::MutexLock lock(&mu_);
+  auto it = entries_.begin();
+  if (after.has_value()) {
+    it = std::upper_bound(entries_.begin(), entries_.end(), *after,
+                          [](const PageKey& k, const auto& e) { return k < KeyOf(*e); });
   }
-  next_page_token->clear();
-  if (i < entries_.size() && !page.empty()) *next_page_token = page.back().id();
+  Page page;
+  for (; it != entries_.end() && static_cast<int>(page.maps.size()) < page_size; ++it) {
+    page.maps.push_back((*it)->info);
+  }
+  if (it != entries_.end() && !page.maps.empty()) {
+    page.next_page_token = EncodePageToken(KeyOf(**std::prev(it)), kListScope);
+  }
   return page;
 }
 

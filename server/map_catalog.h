@@ -10,6 +10,7 @@
 #include "absl/synchronization/mutex.h"
 #include "core/map/io/map_io.h"
 #include "core/map/map.h"
+#include "server/page_token.h"
 #include "server/store.h"
 #include "swarmplan/v1/maps.pb.h"
 
@@ -42,9 +43,13 @@ class MapCatalog {
   // NOT_FOUND naming the id.
   absl::StatusOr<std::shared_ptr<const CatalogEntry>> Get(const std::string& id) const;
   absl::StatusOr<v1::MapSource> GetSource(const std::string& id) const;
-  // Oldest first; `page_token` is the id after which to continue.
-  std::vector<v1::MapInfo> List(int page_size, const std::string& page_token,
-                                std::string* next_page_token) const;
+  struct Page {
+    std::vector<v1::MapInfo> maps;
+    std::string next_page_token;  // empty on the last page
+  };
+  // Oldest first (by creation time, then id), continuing after `page_token`. INVALID_ARGUMENT
+  // naming page_token for a token List did not issue.
+  absl::StatusOr<Page> List(int page_size, const std::string& page_token) const;
   absl::Status Delete(const std::string& id);
   int size() const;
 
@@ -52,7 +57,7 @@ class MapCatalog {
   Store& store_;
   const LoadOptions load_options_;
   mutable absl::Mutex mu_;
-  // Upload order; ids are unique.
+  // Ordered by KeyOf (creation time, then id); ids are unique.
   std::vector<std::shared_ptr<const CatalogEntry>> entries_ ABSL_GUARDED_BY(mu_);
   absl::Mutex upload_mu_;  // serialises uploads so identical concurrent uploads dedupe
 };

@@ -51,11 +51,10 @@ grpc::ServerUnaryReactor* MapServiceImpl::ListMaps(grpc::CallbackServerContext* 
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
   absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
   if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
-  std::string next;
-  for (v1::MapInfo& info : maps_.List(*page_size, request->page_token(), &next)) {
-    *response->add_maps() = std::move(info);
-  }
-  response->set_next_page_token(next);
+  absl::StatusOr<MapCatalog::Page> page = maps_.List(*page_size, request->page_token());
+  if (!page.ok()) return FinishUnary(context, ToGrpcStatus(page.status()));
+  for (v1::MapInfo& info : page->maps) *response->add_maps() = std::move(info);
+  response->set_next_page_token(page->next_page_token);
   return FinishUnary(context, grpc::Status::OK);
 }
 

@@ -127,10 +127,9 @@ void Metrics::JobStarted(const std::string& algorithm, double queue_wait_seconds
 
 void Metrics::SetQueueDepth(int depth) { impl_->queue_depth.Set(depth); }
 
-void Metrics::SetWorkers(int busy, int total) {
-  impl_->busy.Set(busy);
-  impl_->workers.Set(total);
-}
+void Metrics::SetWorkers(int total) { impl_->workers.Set(total); }
+
+void Metrics::SetWorkersBusy(int busy) { impl_->busy.Set(busy); }
 
 void Metrics::SetMapsStored(int maps) { impl_->maps.Set(maps); }
 

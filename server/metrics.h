@@ -28,7 +28,8 @@ class Metrics {
                    int64_t evaluations);
   void JobStarted(const std::string& algorithm, double queue_wait_seconds);
   void SetQueueDepth(int depth);
-  void SetWorkers(int busy, int total);
+  void SetWorkers(int total);
+  void SetWorkersBusy(int busy);
   void SetMapsStored(int maps);
   void RpcHandled(const std::string& method, const std::string& code, double seconds);
 

@@ -126,6 +126,13 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
     return absl::UnavailableError(absl::StrCat(
         "--listen ", config.listen, ": cannot listen there (address in use or invalid)"));
   }
+  if (grpc::HealthCheckServiceInterface* health = impl->grpc_server->GetHealthCheckService()) {
+    for (const char* service :
+         {v1::MapService::service_full_name(), v1::AlgorithmService::service_full_name(),
+          v1::JobService::service_full_name()}) {
+      health->SetServingStatus(service, true);
+    }
+  }
   spdlog::info("swarmplan-server listening on port {} (metrics: {}, data: {}, auth: {}, tls: {})",
                impl->port,
                impl->metrics.port() > 0 ? absl::StrCat(impl->metrics.port()) : std::string("off"),

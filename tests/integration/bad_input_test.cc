@@ -118,6 +118,21 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
       {"time budget above the server limit",
        [](auto& r) { r.mutable_limits()->mutable_time_budget()->set_seconds(61); },
        C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"time budget nanos above a second",
+       [](auto& r) { r.mutable_limits()->mutable_time_budget()->set_nanos(2000000000); },
+       C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"time budget with seconds and nanos of opposite signs",
+       [](auto& r) {
+         r.mutable_limits()->mutable_time_budget()->set_seconds(1);
+         r.mutable_limits()->mutable_time_budget()->set_nanos(-1);
+       },
+       C::INVALID_ARGUMENT, "limits.time_budget"},
+      {"progress interval nanos below minus a second",
+       [](auto& r) { r.mutable_progress()->mutable_min_interval()->set_nanos(-1000000000); },
+       C::INVALID_ARGUMENT, "progress.min_interval"},
+      {"negative progress interval",
+       [](auto& r) { r.mutable_progress()->mutable_min_interval()->set_nanos(-5); },
+       C::INVALID_ARGUMENT, "progress.min_interval"},
       {"negative progress rate", [](auto& r) { r.mutable_progress()->set_every_iterations(-2); },
        C::INVALID_ARGUMENT, "progress.every_iterations"},
       {"unknown smoothing", [](auto& r) { r.set_smoothing("sandpaper"); }, C::INVALID_ARGUMENT,
@@ -158,6 +173,50 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
   grpc::ClientContext context;
   ASSERT_TRUE(server_.jobs().ListJobs(&context, {}, &jobs).ok());
   EXPECT_EQ(jobs.jobs_size(), 0);  // nothing was queued
+  ExpectHealthyAndNothingLost();
+}
+
+TEST_F(BadInputTest, ListJobsRefusesAStateFilterOutsideTheEnum) {
+  for (int state : {99, -1, 0}) {
+    SCOPED_TRACE(state);
+    v1::ListJobsRequest request;
+    request.add_states(v1::JOB_STATE_SUCCEEDED);
+    request.add_states(static_cast<v1::JobState>(state));
+    v1::ListJobsResponse response;
+    grpc::ClientContext context;
+    grpc::Status status = server_.jobs().ListJobs(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("states[1]"), std::string::npos)
+        << status.error_message();
+  }
+}
+
+TEST_F(BadInputTest, GarbageAndTamperedPageTokensAreInvalidArguments) {
+  v1::ListMapsRequest first_maps;
+  first_maps.set_page_size(1);
+  v1::ListMapsResponse maps;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(server_.maps().ListMaps(&context, first_maps, &maps).ok());
+    ASSERT_FALSE(maps.next_page_token().empty());
+  }
+  std::string tampered = maps.next_page_token();
+  tampered[tampered.size() / 2] = tampered[tampered.size() / 2] == 'A' ? 'B' : 'A';
+  for (const std::string& token : {std::string("garbage"), tampered, grid_id_}) {
+    SCOPED_TRACE(token);
+    v1::ListMapsRequest request;
+    request.set_page_token(token);
+    grpc::ClientContext c1, c2;
+    grpc::Status status = server_.maps().ListMaps(&c1, request, &maps);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("page_token"), std::string::npos);
+    v1::ListJobsRequest jobs_request;
+    jobs_request.set_page_token(token);
+    v1::ListJobsResponse jobs;
+    status = server_.jobs().ListJobs(&c2, jobs_request, &jobs);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_NE(status.error_message().find("page_token"), std::string::npos);
+  }
   ExpectHealthyAndNothingLost();
 }
 

@@ -114,6 +114,31 @@ TEST_F(JobsTest, ClientRequestIdMakesSubmitIdempotent) {
   EXPECT_EQ(second.job().request().labels().at("robot"), "agv-7");
 }
 
+TEST_F(JobsTest, AClientRequestIdReusedForADifferentRequestIsAlreadyExists) {
+  v1::PlanRequest request = TestServer::SlowRequest(map_id_, 1, 0);
+  request.set_client_request_id("req-7");
+  const v1::Job first = server_.SubmitOk(request);
+  v1::PlanRequest other = request;
+  other.mutable_goal()->set_x(4.5);
+  v1::SubmitPlanResponse response;
+  grpc::ClientContext c1;
+  grpc::Status status = server_.jobs().SubmitPlan(&c1, other, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::ALREADY_EXISTS);
+  EXPECT_NE(status.error_message().find("client_request_id"), std::string::npos);
+  EXPECT_NE(status.error_message().find(first.id()), std::string::npos);
+  // Plan refuses it the same way; the same request through Plan streams the first job.
+  grpc::ClientContext c2;
+  auto reader = server_.jobs().Plan(&c2, other);
+  EXPECT_TRUE(TestServer::ReadAll(*reader, &status).empty());
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::ALREADY_EXISTS);
+  grpc::ClientContext c3;
+  auto same = server_.jobs().Plan(&c3, request);
+  const std::vector<v1::JobEvent> events = TestServer::ReadAll(*same, &status);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.front().job_id(), first.id());
+}
+
 TEST_F(JobsTest, ListJobsFiltersByStateAndPagesNewestFirst) {
   std::vector<std::string> ids;
   for (int i = 0; i < 3; ++i) {

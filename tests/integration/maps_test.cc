@@ -91,6 +91,36 @@ TEST_F(MapsTest, ListMapsPagesThroughEveryMapOldestFirst) {
   EXPECT_EQ(pages, 3);
 }
 
+TEST_F(MapsTest, ListMapsContinuesAfterThePagesLastMapWasDeleted) {
+  std::vector<std::string> ids;
+  for (int i = 0; i < 5; ++i) ids.push_back(server_.UploadGrid("m" + std::to_string(i), 3, 3));
+  v1::ListMapsRequest request;
+  request.set_page_size(2);
+  v1::ListMapsResponse first;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(server_.maps().ListMaps(&context, request, &first).ok());
+  }
+  ASSERT_EQ(first.maps_size(), 2);
+  ASSERT_FALSE(first.next_page_token().empty());
+  for (const std::string& id : {ids[1], ids[2]}) {  // the page's last map and the next one
+    v1::DeleteMapRequest del;
+    del.set_id(id);
+    v1::DeleteMapResponse deleted;
+    grpc::ClientContext context;
+    ASSERT_TRUE(server_.maps().DeleteMap(&context, del, &deleted).ok());
+  }
+  request.set_page_token(first.next_page_token());
+  request.set_page_size(10);
+  v1::ListMapsResponse rest;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server_.maps().ListMaps(&context, request, &rest).ok());
+  ASSERT_EQ(rest.maps_size(), 2);
+  EXPECT_EQ(rest.maps(0).id(), ids[3]);
+  EXPECT_EQ(rest.maps(1).id(), ids[4]);
+  EXPECT_TRUE(rest.next_page_token().empty());
+}
+
 TEST_F(MapsTest, DeleteMapRemovesItAndASecondDeleteIsNotFound) {
   const std::string id = server_.UploadGrid("gone", 3, 3);
   v1::DeleteMapRequest request;

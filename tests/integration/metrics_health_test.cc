@@ -2,6 +2,7 @@
 // server reflection (spoken with a generic stub, so no generated code of theirs is needed).
 #include <grpcpp/generic/generic_stub.h>
 
+#include "absl/time/clock.h"
 #include "tests/integration/test_server.h"
 
 namespace swarmplan::testing {
@@ -99,6 +100,40 @@ TEST(OperationsTest, MetricsAreServedOverHttpWithConventionalNames) {
   }
 }
 
+// The value of an unlabelled metric in a scrape, or -1 when absent.
+double MetricValue(const std::string& body, const std::string& name) {
+  const std::string prefix = "\n" + name + " ";
+  const size_t at = body.find(prefix);
+  if (at == std::string::npos) return -1;
+  return std::stod(body.substr(at + prefix.size()));
+}
+
+TEST(OperationsTest, WorkersBusyReturnsToZeroAfterJobsFinish) {
+  TempDir dir;
+  TestServer server(dir.path());
+  const std::string map_id = server.UploadGrid("grid", 6, 4);
+  const std::string running = server.SubmitOk(TestServer::SlowRequest(map_id, 100, 10)).id();
+  server.WaitForState(running, v1::JOB_STATE_RUNNING);
+  EXPECT_EQ(
+      MetricValue(HttpGet(server.server().metrics_port(), "/metrics"), "swarmplan_workers_busy"),
+      1);
+  server.WaitUntilFinal(running);
+  server.WaitUntilFinal(server.SubmitOk(TestServer::SlowRequest(map_id, 2, 0)).id());
+  // The worker lets go of the job just after its final state is visible: allow it a moment.
+  const absl::Time give_up = absl::Now() + absl::Seconds(5);
+  double busy = -1;
+  do {
+    busy =
+        MetricValue(HttpGet(server.server().metrics_port(), "/metrics"), "swarmplan_workers_busy");
+    if (busy == 0) break;
+    absl::SleepFor(absl::Milliseconds(20));
+  } while (absl::Now() < give_up);
+  EXPECT_EQ(busy, 0);
+  EXPECT_EQ(
+      MetricValue(HttpGet(server.server().metrics_port(), "/metrics"), "swarmplan_job_queue_depth"),
+      0);
+}
+
 TEST(OperationsTest, HealthCheckSaysServing) {
   TempDir dir;
   TestServer server(dir.path());
@@ -107,6 +142,28 @@ TEST(OperationsTest, HealthCheckSaysServing) {
   grpc::Status status = RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", "", &response);
   ASSERT_TRUE(status.ok()) << status.error_message();
   EXPECT_EQ(response, std::string("\x08\x01", 2));
+}
+
+TEST(OperationsTest, HealthCheckOfEachServiceSaysServing) {
+  TempDir dir;
+  TestServer server(dir.path());
+  for (const std::string service :
+       {"swarmplan.v1.MapService", "swarmplan.v1.JobService", "swarmplan.v1.AlgorithmService"}) {
+    SCOPED_TRACE(service);
+    // HealthCheckRequest{service}: field 1, length-delimited.
+    const std::string request =
+        std::string("\x0a", 1) + static_cast<char>(service.size()) + service;
+    std::string response;
+    grpc::Status status =
+        RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", request, &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    EXPECT_EQ(response, std::string("\x08\x01", 2));
+  }
+  std::string response;
+  const std::string unknown = std::string("\x0a\x0d", 2) + "no.SuchThing1";
+  EXPECT_EQ(
+      RawUnary(*server.channel(), "/grpc.health.v1.Health/Check", unknown, &response).error_code(),
+      grpc::StatusCode::NOT_FOUND);
 }
 
 TEST(OperationsTest, ReflectionListsTheSwarmplanServices) {
