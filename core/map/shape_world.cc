@@ -4,6 +4,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "core/geometry/simple_polygon.h"
 
 namespace swarmplan {
 namespace {
@@ -59,6 +60,9 @@ absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle
     const double area = SignedArea(v);
     if (area == 0.0 || !std::isfinite(area)) {
       return absl::InvalidArgumentError(absl::StrCat("polygons[", i, "]: has zero area"));
+    }
+    if (absl::Status s = CheckSimplePolygon(v); !s.ok()) {
+      return absl::Status(s.code(), absl::StrCat("polygons[", i, "]: ", s.message()));
     }
     if (area < 0) std::reverse(v.begin(), v.end());
   }

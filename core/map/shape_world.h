@@ -33,7 +33,8 @@ struct Bounds2 {
 class ShapeWorld {
  public:
   // Validates: finite coordinates, bounds with positive area, radii > 0, polygons with at least
-  // three distinct vertices and non-zero area. Clockwise polygons are reoriented.
+  // three distinct vertices, non-zero area and no self-intersection (CheckSimplePolygon in
+  // core/geometry/simple_polygon.h). Clockwise polygons are reoriented.
   static absl::StatusOr<ShapeWorld> Create(Bounds2 bounds, std::vector<Circle> circles,
                                            std::vector<Polygon> polygons,
                                            const MapLimits& limits = {});

@@ -79,6 +79,16 @@ TEST(MapIoGeoJsonTest, RejectsBadInputNamingThePath) {
       {Collection(R"({"type": "Thing"})"), "world.geojson: features[0]: must be an object"},
       {Collection(kSquare, R"("bounds": [0, 0, 1], )"),
        "world.geojson: bounds: must be [xmin, ymin, xmax, ymax]"},
+      // Unequal lobes: the signed area is not zero, the ring crosses itself.
+      {Collection(std::string(kSquare) + R"(, {"type": "Feature", "geometry": {"type":
+           "MultiPolygon", "coordinates": [[[[5, 5], [6, 5], [5, 6], [5, 5]]],
+           [[[0, 0], [4, 2], [4, 0], [0, 2], [-1, 1.5], [-1, 0.5], [0, 0]]]]}})"),
+       "world.geojson: features[1].geometry.coordinates[1][0]: polygon is self-intersecting: "
+       "edge 0 (0, 0)-(4, 2) and edge 2 (4, 0)-(0, 2) cross or touch"},
+      // Two squares joined at one vertex.
+      {Collection(R"({"type": "Feature", "geometry": {"type": "Polygon", "coordinates":
+           [[[0, 0], [1, 0], [1, 1], [2, 1], [2, 2], [1, 2], [1, 1], [0, 1], [0, 0]]]}})"),
+       "world.geojson: features[0].geometry.coordinates[0]: polygon is self-intersecting"},
   };
   for (const Case& c : cases) {
     auto map = ParseGeo(c.bytes);

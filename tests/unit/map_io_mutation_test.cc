@@ -45,8 +45,7 @@ struct Sample {
 
 std::vector<Sample> Samples() {
   const std::string png(reinterpret_cast<const char*>(testing::kRgb16), sizeof(testing::kRgb16));
-  const std::string yaml =
-      "image: m.pgm\nresolution: 0.05\norigin: [1, 2, 0]\nnegate: 0\nmode: scale\n";
+  const std::string yaml_info = "resolution: 0.05\norigin: [1, 2, 0]\nnegate: 0\nmode: scale\n";
   return {
       {"movingai", {{"m.map", "type octile\nheight 3\nwidth 4\nmap\n.T@.\nGS.W\n....\n"}}},
       {"ascii", {{"m.txt", "..#\n@..\n...\n"}}},
@@ -65,8 +64,9 @@ std::vector<Sample> Samples() {
       {"terrain-pgm", {{"m.pgm", "P2 3 2 255\n0 1 2\n3 4 5\n"}}},
       {"pgm", {{"m.pgm", std::string("P5 3 2 255\n\x00\xff\x96\xff\x64\x00", 17)}}},
       {"png", {{"m.png", png}}},
-      {"ros-yaml-pgm", {{"m.yaml", yaml}, {"m.pgm", "P2 3 2 255\n0 255 150\n255 100 0\n"}}},
-      {"ros-yaml-pgm", {{"m.yaml", yaml}, {"m.png", png}}},
+      {"ros-yaml-pgm",
+       {{"m.yaml", "image: m.pgm\n" + yaml_info}, {"m.pgm", "P2 3 2 255\n0 255 150\n255 100 0\n"}}},
+      {"ros-yaml-pgm", {{"m.yaml", "image: m.png\n" + yaml_info}, {"m.png", png}}},
   };
 }
 

@@ -188,6 +188,26 @@ TEST(MapIoRosMapTest, RejectsBadYamlNamingTheField) {
   }
 }
 
+TEST(MapIoRosMapTest, TheImageFileMustHaveTheBaseNameTheYamlNames) {
+  for (const char* named : {"other.pgm", "maps/other.pgm", "map.pgm/", "map.PGM"}) {
+    const std::string yaml =
+        std::string("image: ") + named + "\nresolution: 1\norigin: [0, 0, 0]\n";
+    auto map = ParseRos(yaml, kPlainPgm);
+    ASSERT_FALSE(map.ok()) << named;
+    EXPECT_EQ(map.status().code(), absl::StatusCode::kInvalidArgument) << named;
+    EXPECT_THAT(map.status().message(), HasSubstr(std::string("map.yaml: image: names \"") + named +
+                                                  "\" but the image file given is \"map.pgm\""));
+  }
+  // A folder in either name does not matter: the base names match.
+  for (const char* named : {"map.pgm", "maps/map.pgm", "/srv/maps/map.pgm"}) {
+    const std::string yaml =
+        std::string("image: ") + named + "\nresolution: 1\norigin: [0, 0, 0]\n";
+    auto map = ParseMap("ros-yaml-pgm",
+                        {MapFile{"up/map.yaml", yaml}, MapFile{"elsewhere/map.pgm", kPlainPgm}});
+    EXPECT_TRUE(map.ok()) << named << ": " << map.status();
+  }
+}
+
 TEST(MapIoRosMapTest, RejectsBadImagesNamingTheFileAndLine) {
   struct Case {
     std::string image;

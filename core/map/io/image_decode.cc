@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "absl/strings/str_cat.h"
+#include "core/map/io/png_image_data.h"
 #include "core/map/io/text_util.h"
 
 namespace swarmplan {
@@ -93,6 +94,7 @@ struct PngRead {
   int channels = 0;
   int bit_depth = 0;
   size_t rowbytes = 0;
+  map_io_internal::PngLayout layout;
   bool too_large = false;
   char error[200] = {};
 };
@@ -112,9 +114,17 @@ void PngReadData(png_structp png, png_bytep out, size_t length) {
   read->offset += length;
 }
 
-// Returns false with read->error set on failure. No C++ objects with destructors live in this
-// frame, so the longjmp from libpng is safe.
-bool ReadPngPixels(PngRead* read) {
+// The ancillary chunks the decoder never needs: libpng skips them unread (no text or profile
+// is inflated). tRNS is kept: it becomes alpha.
+constexpr png_byte kIgnoredChunks[] =
+    "bKGD\0cHRM\0eXIf\0gAMA\0hIST\0iCCP\0iTXt\0oFFs\0pCAL\0pHYs\0sBIT\0sCAL\0sPLT\0sRGB\0"
+    "tEXt\0tIME\0zTXt";
+constexpr int kIgnoredChunkCount = sizeof(kIgnoredChunks) / 5;
+constexpr png_alloc_size_t kMaxChunkBytes = 1 << 20;
+
+// Reads the header up to the image data. Returns false with read->error set on failure. No C++
+// objects with destructors live in this frame, so the longjmp from libpng is safe.
+bool ReadPngHeader(PngRead* read) {
   read->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, read, PngError, PngWarning);
   if (read->png == nullptr) {
     std::snprintf(read->error, sizeof(read->error), "cannot start the PNG decoder");
@@ -128,6 +138,10 @@ bool ReadPngPixels(PngRead* read) {
   if (setjmp(png_jmpbuf(read->png))) return false;
   png_set_read_fn(read->png, read, PngReadData);
   png_set_user_limits(read->png, 0x7fffffff, 0x7fffffff);
+  png_set_chunk_malloc_max(read->png, kMaxChunkBytes);
+  png_set_keep_unknown_chunks(read->png, PNG_HANDLE_CHUNK_NEVER, nullptr, 0);
+  png_set_keep_unknown_chunks(read->png, PNG_HANDLE_CHUNK_NEVER, kIgnoredChunks,
+                              kIgnoredChunkCount);
   png_read_info(read->png, read->info);
   read->width = png_get_image_width(read->png, read->info);
   read->height = png_get_image_height(read->png, read->info);
@@ -138,6 +152,17 @@ bool ReadPngPixels(PngRead* read) {
                   read->width, read->height, static_cast<long long>(read->max_cells));
     return false;
   }
+  read->layout.width = read->width;
+  read->layout.height = read->height;
+  read->layout.bit_depth = png_get_bit_depth(read->png, read->info);
+  read->layout.channels = png_get_channels(read->png, read->info);
+  read->layout.interlaced = png_get_interlace_type(read->png, read->info) != PNG_INTERLACE_NONE;
+  return true;
+}
+
+// Decodes the rows once the image data has passed CheckPngImageData. Same contract as above.
+bool ReadPngRows(PngRead* read) {
+  if (setjmp(png_jmpbuf(read->png))) return false;
   png_set_expand(read->png);  // palette -> RGB, grey < 8 bits -> 8 bits, tRNS -> alpha
   png_set_interlace_handling(read->png);
   png_read_update_info(read->png, read->info);
@@ -221,14 +246,20 @@ absl::StatusOr<DecodedImage> DecodePgm(const std::string& file, const std::strin
 }
 
 absl::StatusOr<DecodedImage> DecodePng(const std::string& file, const std::string& bytes,
-                                       const MapLimits& limits) {
+                                       const MapLimits& limits,
+                                       map_io_internal::PngDecodeStats* stats) {
   PngRead read;
   read.data = reinterpret_cast<const unsigned char*>(bytes.data());
   read.size = bytes.size();
   read.max_cells = limits.max_cells;
-  const bool ok = ReadPngPixels(&read);
+  bool ok = ReadPngHeader(&read);
+  absl::Status image_data;
+  if (ok) image_data = map_io_internal::CheckPngImageData(bytes, read.layout, stats);
+  if (ok && image_data.ok()) ok = ReadPngRows(&read);
   absl::StatusOr<DecodedImage> result;
-  if (!ok) {
+  if (!image_data.ok()) {
+    result = absl::InvalidArgumentError(absl::StrCat(file, ": bad PNG: ", image_data.message()));
+  } else if (!ok) {
     result = read.too_large
                  ? absl::ResourceExhaustedError(absl::StrCat(file, ": PNG of ", read.error))
                  : absl::InvalidArgumentError(absl::StrCat(file, ": bad PNG: ", read.error));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "core/map/io/png_image_data.h"
 #include "core/map/limits.h"
 
 namespace swarmplan {
@@ -37,7 +38,10 @@ absl::StatusOr<DecodedImage> DecodeImage(const std::string& file, const std::str
                                          const MapLimits& limits);
 absl::StatusOr<DecodedImage> DecodePgm(const std::string& file, const std::string& bytes,
                                        const MapLimits& limits);
+// Inflates at most one byte more image data than the declared size needs (see
+// png_image_data.h); `stats`, when given, counts that work.
 absl::StatusOr<DecodedImage> DecodePng(const std::string& file, const std::string& bytes,
-                                       const MapLimits& limits);
+                                       const MapLimits& limits,
+                                       map_io_internal::PngDecodeStats* stats = nullptr);
 
 }  // namespace swarmplan

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "core/geometry/simple_polygon.h"
 
 namespace swarmplan::map_io_internal {
 
@@ -72,6 +73,9 @@ absl::Status CleanRing(std::vector<Point2>* ring, const std::string& path) {
   }
   if (area == 0.0) {
     return absl::InvalidArgumentError(absl::StrCat(path, ": polygon has zero area"));
+  }
+  if (absl::Status s = CheckSimplePolygon(out); !s.ok()) {
+    return absl::Status(s.code(), absl::StrCat(path, ": ", s.message()));
   }
   *ring = std::move(out);
   return absl::OkStatus();

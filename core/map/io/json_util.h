@@ -24,7 +24,8 @@ absl::StatusOr<std::pair<Point2, Point2>> JsonBounds(const nlohmann::json& value
                                                      const std::string& path);
 
 // Turns a list of points into a polygon ring: drops repeated consecutive vertices and the
-// repeated closing vertex, then checks at least 3 vertices and non-zero area. Errors name `path`.
+// repeated closing vertex, then checks at least 3 vertices, non-zero area and no self-intersection
+// (CheckSimplePolygon). Errors name `path`.
 absl::Status CleanRing(std::vector<Point2>* ring, const std::string& path);
 
 }  // namespace swarmplan::map_io_internal

@@ -103,6 +103,19 @@ absl::StatusOr<RosMapInfo> ReadInfo(const YAML::Node& root) {
   return info;
 }
 
+// The image the YAML names and the image file given with it must have the same base name.
+absl::Status CheckImageName(const std::string& named, const std::string& given) {
+  const std::string named_base = std::filesystem::path(named).filename().string();
+  const std::string given_base = std::filesystem::path(given).filename().string();
+  if (named_base.empty() || named_base != given_base) {
+    return FieldError(
+        "image",
+        absl::StrCat("names ", map_io_internal::Quote(named), " but the image file given is ",
+                     map_io_internal::Quote(given), " (their base names must match)"));
+  }
+  return absl::OkStatus();
+}
+
 absl::StatusOr<OccupancyGrid> ImageToGrid(const std::string& file, const DecodedImage& image,
                                           const RosMapInfo& info, const MapLimits& limits) {
   const int width = image.width;
@@ -178,6 +191,9 @@ absl::StatusOr<OccupancyGrid> ParseRosMap(const MapFile& yaml, const MapFile& im
       return map_io_internal::Invalid(yaml.name, "image: missing (the image file name)");
     }
     info = ReadInfo(root);
+    if (info.ok()) {
+      if (auto s = CheckImageName(root["image"].Scalar(), image.name); !s.ok()) info = s;
+    }
   } catch (const YAML::Exception& e) {
     return map_io_internal::Invalid(yaml.name, absl::StrCat("not valid YAML: ", e.what()));
   }
