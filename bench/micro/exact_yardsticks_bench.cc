@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,17 +33,13 @@ std::string MovingAiDir() {
   return dir != nullptr ? dir : "../shared/benchmarks/movingai";
 }
 
-// The first scenario of kScenariosPerMap buckets spread evenly from the shortest to the
-// longest bucket of the file.
-std::vector<Scenario> SpreadSample(const std::vector<Scenario>& scenarios) {
-  std::map<int, const Scenario*> first_of_bucket;
-  for (const Scenario& s : scenarios) first_of_bucket.try_emplace(s.bucket, &s);
-  std::vector<const Scenario*> buckets;
-  for (const auto& [bucket, s] : first_of_bucket) buckets.push_back(s);
+// kScenariosPerMap scenarios spread evenly over the file (which runs from the shortest bucket
+// to the longest).
+std::vector<Scenario> EvenSample(const std::vector<Scenario>& scenarios) {
   std::vector<Scenario> sample;
-  const size_t n = std::min(kScenariosPerMap, buckets.size());
+  const size_t n = std::min(kScenariosPerMap, scenarios.size());
   for (size_t k = 0; k < n; ++k) {
-    sample.push_back(*buckets[n == 1 ? 0 : k * (buckets.size() - 1) / (n - 1)]);
+    sample.push_back(scenarios[n == 1 ? 0 : k * (scenarios.size() - 1) / (n - 1)]);
   }
   return sample;
 }
@@ -78,7 +73,7 @@ void RunYardstick(benchmark::State& state, const std::string& map_path) {
   const OccupancyGrid& grid = *map->grid();
   const GridCollisionChecker checker(grid);
   const AnyAngleGrid any_angle = AnyAngleGrid::Build(grid, 0.0);
-  const std::vector<Scenario> sample = SpreadSample(*scenarios);
+  const std::vector<Scenario> sample = EvenSample(*scenarios);
   GridSearchContext context;
   std::vector<double> exact_ms, theta_ms, astar_ms;
   double octile = 0, exact = 0, theta_ratio = 0, theta_ratio_max = 0, exact_over_octile = 0;

@@ -13,16 +13,12 @@
 #include "core/registry.h"
 #include "core/run.h"
 #include "gtest/gtest.h"
+#include "tests/unit/plan_test_support.h"
 
 namespace swarmplan {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-class NullObserver final : public Observer {
- public:
-  void OnIteration(const IterationStats&) override {}
-};
 
 // --- Brute force, independent of the planner: Dijkstra over the visibility graph of every
 // lattice point that touches a blocked cell, plus start and goal, in grid coordinates. A
@@ -193,16 +189,11 @@ bool RandomFreePoint(std::mt19937_64& rng, const BruteForce& brute, int w, int h
   return false;
 }
 
+using ::swarmplan::testing::NullObserver;
+
 absl::StatusOr<PlanResult> Plan(const std::string& algorithm, const MapPtr& map,
                                 const Point2& start, const Point2& goal, double clearance = 0) {
-  PlanRequest request;
-  request.algorithm = algorithm;
-  request.problem.map = map;
-  request.problem.start = Point3(start.x(), start.y(), 0);
-  request.problem.goal = Point3(goal.x(), goal.y(), 0);
-  request.problem.clearance = clearance;
-  NullObserver observer;
-  return RunPlan(DefaultRegistry(), request, StopToken(), observer);
+  return ::swarmplan::testing::PlanOnMap(algorithm, map, start, goal, clearance);
 }
 
 double Length(const Path& path) {
@@ -225,8 +216,8 @@ TEST(ExactAnyAngleTest, MatchesBruteForceOnRandomGrids) {
         !RandomFreePoint(rng, brute, g.width, g.height, &t)) {
       continue;
     }
-    SCOPED_TRACE(testing::Message() << "trial " << trial << " " << g.width << "x" << g.height
-                                    << " from " << s.transpose() << " to " << t.transpose());
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << " " << g.width << "x" << g.height
+                                      << " from " << s.transpose() << " to " << t.transpose());
     const double optimum = brute.ShortestPath(s, t) * resolution;
     const Point2 ws = origin + s * resolution, wt = origin + t * resolution;
     absl::StatusOr<PlanResult> result = Plan("exact-any-angle", g.map, ws, wt);
