@@ -38,6 +38,9 @@ inline constexpr char kDijkstra[] =
 inline constexpr char kThetaStar[] =
     "A. Nash, K. Daniel, S. Koenig, A. Felner, \"Theta*: Any-Angle Path Planning on Grids\", "
     "AAAI Conference on Artificial Intelligence, 2007";
+inline constexpr char kAnya[] =
+    "D. Harabor, A. Grastien, D. Oz, V. Aksakalli, \"Optimal Any-Angle Pathfinding In "
+    "Practice\", Journal of Artificial Intelligence Research 56, 2016";
 inline constexpr char kVisibilityGraph[] =
     "T. Lozano-Perez, M. A. Wesley, \"An algorithm for planning collision-free paths among "
     "polyhedral obstacles\", Communications of the ACM 22(10), 1979";

@@ -9,6 +9,7 @@
 #include "core/algorithms/bfo/as_bfo.h"
 #include "core/algorithms/bpso/binary_pso.h"
 #include "core/algorithms/bso/bso_planners.h"
+#include "core/algorithms/exact/exact_any_angle.h"
 #include "core/algorithms/exact/exact_planners.h"
 #include "core/algorithms/pso/pso_planner.h"
 
@@ -18,7 +19,7 @@ namespace swarmplan {
 absl::Status RegisterAllPlanners(Registry& registry) {
   std::vector<PlannerInfo> infos = {
       // Exact planners: the yardsticks.
-      AStarInfo(), DijkstraInfo(), ThetaStarInfo(), VisibilityGraphInfo(),
+      ExactAnyAngleInfo(), AStarInfo(), DijkstraInfo(), ThetaStarInfo(), VisibilityGraphInfo(),
       // Beetle swarms and their baselines over spline waypoints.
       BsoInfo(), AemBsoInfo(), AemBsoLinearInfo(), PsoInfo(), BatInfo(),
       // The beetle antennae family (terrain and 2D) and its ACO baseline.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 
 #include "absl/status/status.h"
@@ -31,23 +32,25 @@ absl::Status CheckEndpoint(const ShapeWorld& world, const ShapeCollisionChecker&
   return absl::OkStatus();
 }
 
-}  // namespace
-
-absl::StatusOr<Path> ShortestPathVisibility(const ShapeWorld& world, const Point2& start,
-                                            const Point2& goal, double clearance,
-                                            double circle_tolerance) {
+absl::Status CheckInputs(const ShapeWorld& world, const ShapeCollisionChecker& checker,
+                         const Point2& start, const Point2& goal, double clearance,
+                         double circle_tolerance) {
   if (!std::isfinite(clearance) || clearance < 0) {
     return absl::InvalidArgumentError("clearance: must be a finite number >= 0");
   }
   if (!std::isfinite(circle_tolerance) || circle_tolerance <= 0) {
     return absl::InvalidArgumentError("circle_tolerance: must be a finite number > 0");
   }
-  const ShapeCollisionChecker checker(world);
   if (absl::Status s = CheckEndpoint(world, checker, start, clearance, "start"); !s.ok()) {
     return s;
   }
-  if (absl::Status s = CheckEndpoint(world, checker, goal, clearance, "goal"); !s.ok()) return s;
-  const GrownObstacles grown = GrowObstacles(world, clearance, circle_tolerance);
+  return CheckEndpoint(world, checker, goal, clearance, "goal");
+}
+
+// A* over the visibility graph of the grown obstacles; the inputs are valid.
+absl::StatusOr<Path> SearchVisibilityGraph(const ShapeCollisionChecker& checker,
+                                           const GrownObstacles& grown, const Point2& start,
+                                           const Point2& goal, double clearance) {
   // An end may keep the clearance yet lie in the slack between a grown piece and the true
   // offset; its edges are then checked exactly instead.
   const bool start_in_slack = grown.Contains(start);
@@ -109,6 +112,37 @@ absl::StatusOr<Path> ShortestPathVisibility(const ShapeWorld& world, const Point
   for (int v = 1; v >= 0; v = parent[v]) path.push_back(Point3(point(v).x(), point(v).y(), 0.0));
   std::reverse(path.begin(), path.end());
   return path;
+}
+
+}  // namespace
+
+absl::StatusOr<Path> ShortestPathVisibility(const ShapeWorld& world, const Point2& start,
+                                            const Point2& goal, double clearance,
+                                            double circle_tolerance) {
+  const ShapeCollisionChecker checker(world);
+  if (absl::Status s = CheckInputs(world, checker, start, goal, clearance, circle_tolerance);
+      !s.ok()) {
+    return s;
+  }
+  return SearchVisibilityGraph(checker, GrowObstacles(world, clearance, circle_tolerance), start,
+                               goal, clearance);
+}
+
+absl::StatusOr<Path> ShortestPathVisibility(const Map& map, const Point2& start, const Point2& goal,
+                                            double clearance, double circle_tolerance) {
+  const ShapeWorld* world = map.world();
+  if (world == nullptr) {
+    return absl::InvalidArgumentError("visibility graph: the map is not a shape world");
+  }
+  const ShapeCollisionChecker checker(*world);
+  if (absl::Status s = CheckInputs(*world, checker, start, goal, clearance, circle_tolerance);
+      !s.ok()) {
+    return s;
+  }
+  const std::shared_ptr<const GrownObstacles> grown = map.Derived<GrownObstacles>(
+      absl::StrFormat("grown-obstacles radius=%a tolerance=%a", clearance, circle_tolerance),
+      [&] { return GrowObstacles(*world, clearance, circle_tolerance); });
+  return SearchVisibilityGraph(checker, *grown, start, goal, clearance);
 }
 
 }  // namespace swarmplan

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "core/map/map.h"
 #include "core/map/point.h"
 #include "core/map/shape_world.h"
 
@@ -28,5 +29,11 @@ namespace swarmplan {
 absl::StatusOr<Path> ShortestPathVisibility(const ShapeWorld& world, const Point2& start,
                                             const Point2& goal, double clearance,
                                             double circle_tolerance);
+
+// The same on a shape-world map, with the grown obstacles cached with the map per clearance
+// and tolerance (Map::Derived), so that only the first plan of each pays for growing them.
+// InvalidArgument when the map is not a shape world.
+absl::StatusOr<Path> ShortestPathVisibility(const Map& map, const Point2& start, const Point2& goal,
+                                            double clearance, double circle_tolerance);
 
 }  // namespace swarmplan

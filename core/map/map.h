@@ -3,9 +3,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <variant>
 #include <vector>
 
+#include "absl/functional/function_ref.h"
+#include "core/map/derived_cache.h"
 #include "core/map/occupancy_grid.h"
 #include "core/map/shape_world.h"
 #include "core/map/terrain.h"
@@ -24,6 +27,20 @@ class Map {
   using Data = std::variant<OccupancyGrid, ShapeWorld, Terrain>;
 
   explicit Map(Data data) : data_(std::move(data)) {}
+  // Copies and moves start with an empty derived cache: cached structures may refer into the
+  // data of the map they were built from.
+  Map(const Map& other) : data_(other.data_) {}
+  Map(Map&& other) noexcept : data_(std::move(other.data_)) {}
+  Map& operator=(const Map& other) {
+    data_ = other.data_;
+    cache_ = std::make_unique<DerivedCache>();
+    return *this;
+  }
+  Map& operator=(Map&& other) noexcept {
+    data_ = std::move(other.data_);
+    cache_ = std::make_unique<DerivedCache>();
+    return *this;
+  }
 
   MapKind kind() const { return static_cast<MapKind>(data_.index()); }
   const Data& data() const { return data_; }
@@ -33,8 +50,22 @@ class Map {
   const Terrain* terrain() const { return std::get_if<Terrain>(&data_); }
   bool is_3d() const { return kind() == MapKind::kTerrain; }
 
+  // A structure derived from this map, built by `build` on first use and shared by every
+  // caller until evicted (DerivedCache: at most 16 keys per map, least recently used out).
+  // The key must name everything the structure depends on besides the map (e.g. the
+  // clearance); keys are per type T. The structure may keep pointers into this map's data.
+  template <class T>
+  std::shared_ptr<const T> Derived(const std::string& key, absl::FunctionRef<T()> build) const {
+    std::shared_ptr<const void> value = cache_->GetOrBuild(
+        std::string(typeid(T).name()) + '\n' + key,
+        [&]() -> std::shared_ptr<const void> { return std::make_shared<const T>(build()); });
+    return std::static_pointer_cast<const T>(value);
+  }
+  const DerivedCache& derived_cache() const { return *cache_; }
+
  private:
   Data data_;
+  std::unique_ptr<DerivedCache> cache_ = std::make_unique<DerivedCache>();
 };
 
 using MapPtr = std::shared_ptr<const Map>;

@@ -9,6 +9,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "core/algorithms/citations.h"
+#include "core/algorithms/exact/exact_search_result.h"
 #include "core/geometry/grid_collision.h"
 #include "core/graph/grid_search.h"
 #include "core/graph/theta_star.h"
@@ -17,32 +18,6 @@
 
 namespace swarmplan {
 namespace {
-
-// An exact search is one iteration: the observer sees it once, with best = mean = length.
-SearchResult FinishSearch(Path path, int64_t expanded, absl::Time started, Observer& observer) {
-  SearchResult result;
-  result.found = !path.empty();
-  result.path = std::move(path);
-  result.fitness = result.found ? PathLength(result.path) : 0.0;
-  result.iterations = 1;
-  result.evaluations = expanded;
-  IterationStats stats;
-  stats.iteration = 0;
-  stats.best_fitness = result.fitness;
-  stats.mean_fitness = result.fitness;
-  stats.evaluations = expanded;
-  stats.elapsed = absl::Now() - started;
-  stats.feasible = result.found;
-  observer.OnIteration(stats);
-  result.convergence.push_back(stats);
-  return result;
-}
-
-SearchResult Stopped(StopReason reason) {
-  SearchResult result;
-  result.stop_reason = reason;
-  return result;
-}
 
 // The path through the cell centres, beginning at the exact start and ending at the exact goal
 // when they are not cell centres themselves (each lies in the first or last cell).
@@ -103,7 +78,8 @@ class GridSearchPlanner final : public Planner {
                                      Observer& observer) override {
     absl::StatusOr<const OccupancyGrid*> grid = RequireGrid(problem, id_);
     if (!grid.ok()) return grid.status();
-    if (StopReason reason = stop.Check(0); reason != StopReason::kNone) return Stopped(reason);
+    if (StopReason reason = stop.Check(0); reason != StopReason::kNone)
+      return StoppedExactSearch(reason);
     const absl::Time started = absl::Now();
     GridSearchOptions options = options_;
     options.clearance = problem.clearance;
@@ -114,12 +90,12 @@ class GridSearchPlanner final : public Planner {
     const GridSearchResult search =
         any_angle_ ? ThetaStar(**grid, GridCollisionChecker(**grid), from, to, options, &context_)
                    : SearchGrid(**grid, from, to, options, &context_);
-    if (search.stopped) return Stopped(stop.Check(0));
+    if (search.stopped) return StoppedExactSearch(stop.Check(0));
     Path path = GridPathFromTo(**grid, search.cells, problem.start, problem.goal);
     // The joins to off-centre endpoints are checked like the rest (the cells' centres keep the
     // clearance, but a join between a centre and a point may pass closer to a corner).
     if (!GridCollisionChecker(**grid).PathFree(path, problem.clearance)) path.clear();
-    return FinishSearch(std::move(path), search.expanded, started, observer);
+    return FinishExactSearch(std::move(path), search.expanded, started, observer);
   }
 
   // The search runs between cells: the start and goal cells must be usable.
@@ -154,14 +130,15 @@ class VisibilityGraphPlanner final : public Planner {
       return absl::FailedPreconditionError(
           "algorithm 'visibility-graph' plans on shape-world maps only");
     }
-    if (StopReason reason = stop.Check(0); reason != StopReason::kNone) return Stopped(reason);
+    if (StopReason reason = stop.Check(0); reason != StopReason::kNone)
+      return StoppedExactSearch(reason);
     const absl::Time started = absl::Now();
     absl::StatusOr<Path> path =
-        ShortestPathVisibility(*world, problem.start.head<2>(), problem.goal.head<2>(),
+        ShortestPathVisibility(*problem.map, problem.start.head<2>(), problem.goal.head<2>(),
                                problem.clearance, circle_tolerance_);
-    if (absl::IsNotFound(path.status())) return FinishSearch({}, 0, started, observer);
+    if (absl::IsNotFound(path.status())) return FinishExactSearch({}, 0, started, observer);
     if (!path.ok()) return path.status();
-    return FinishSearch(*std::move(path), 0, started, observer);
+    return FinishExactSearch(*std::move(path), 0, started, observer);
   }
 
  private:
