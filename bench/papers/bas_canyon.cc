@@ -228,8 +228,11 @@ absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options) {
   const CanyonShape shape;
   const int last = terrain.width() - 1;
   const double y = shape.mouth_y;
-  const Point3 start(0, y, terrain.GroundAt(0, y) + kStartHeightAboveGround);
-  const Point3 goal(last, y, terrain.GroundAt(last, y) + kStartHeightAboveGround);
+  const Point2 start_xy = terrain.ToWorld(Point2(0, y));
+  const Point2 goal_xy = terrain.ToWorld(Point2(last, y));
+  const Point3 start(start_xy.x(), start_xy.y(),
+                     terrain.GroundAt(start_xy) + kStartHeightAboveGround);
+  const Point3 goal(goal_xy.x(), goal_xy.y(), terrain.GroundAt(goal_xy) + kStartHeightAboveGround);
 
   const int full_iterations = options.quick ? 10 : 500;
   const int population_iterations = options.quick ? 10 : 200;
@@ -312,7 +315,8 @@ absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options) {
       "(`bench/worlds/bas-canyon/canyon.asc`, ESRI ASCII, `swarmplan-papers generate bas-canyon`,"
       " seed ",
       kCanyonSeed, "). ", shape.width, " columns x ", shape.depth,
-      " rows (the paper's path has 21 columns, i = 1..21), unit cells. Height "
+      " rows (the paper's path has 21 columns, i = 1..21), unit cells with the centre of cell (0, "
+      "0) at the origin, so world coordinates are the paper's grid units. Height "
       "h(x, y) = P - max((P - F_r) g(y - c_r(x)), (P - F_l) g(y - c_l(x))) + rocks(x, y) with "
       "g(d) = exp(-(d / w)^2), plateau P = ",
       shape.plateau, ", a deep winding right valley c_r(x) = ", shape.mouth_y, " + ",
@@ -331,7 +335,8 @@ absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options) {
       "), as in the paper (\"the optimal path ... is along the curved area on the right side of "
       "the canyon\"). Clearance 0 (a path must stay above the bilinear ground).\n",
       "- **Fitness.** The planners' own, eq. 3: sum over the 20 segments of (segment length + Z "
-      "of its end), grid units. Absolute values depend on the map, so only rankings and ratios "
+      "of its end), in grid units (= world units here). Absolute values depend on the map, so only "
+      "rankings and ratios "
       "can be compared with the paper.\n",
       "- **Paper's settings, passed explicitly** (they are also the planners' defaults): ",
       full_iterations,

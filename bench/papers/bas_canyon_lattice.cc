@@ -24,7 +24,8 @@ absl::StatusOr<LatticePath> LatticeOptimum(const Problem& problem, const Lattice
   const int columns = objective.columns();
   const double inf = std::numeric_limits<double>::infinity();
   const auto point = [&](int column, int state) {
-    return Point3(objective.ColumnX(column), (state / zs) * options.y_step,
+    return Point3(objective.ColumnX(column),
+                  terrain.ToWorld(Point2(0, (state / zs) * options.y_step)).y(),
                   terrain.min_height() + (state % zs) * options.z_step);
   };
   const auto step_cost = [&](const Point3& a, const Point3& b) {
@@ -47,7 +48,7 @@ absl::StatusOr<LatticePath> LatticeOptimum(const Problem& problem, const Lattice
           const int n = ny * zs + nz;
           const Point3 b = point(c, n);
           // The ground under b rules out the lower levels without sampling the segment.
-          if (b.z() < terrain.GroundAt(b.x(), b.y()) + problem.clearance) continue;
+          if (b.z() < terrain.GroundAt(b.head<2>()) + problem.clearance) continue;
           const double total = cost[c - 1][s] + step_cost(a, b);
           if (total < cost[c][n]) {
             cost[c][n] = total;

@@ -70,13 +70,15 @@ TEST(BasCanyonTest, AscTextLoadsAsTheSameTerrain) {
 TEST(BasCanyonTest, AscTextHasTheHeaderAndTheNorthernRowFirst) {
   const std::string text = HeightsToAsc(2, 2, {1.0, 2.0, 3.0, 4.5});
   EXPECT_EQ(text,
-            "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+            "ncols 2\nnrows 2\nxllcenter 0\nyllcenter 0\ncellsize 1\n"
             "3.00 4.50\n1.00 2.00\n");
 }
 
 Problem TerrainProblem(int width, int depth, std::vector<double> heights, const Point3& start,
                        const Point3& goal) {
-  absl::StatusOr<Terrain> terrain = Terrain::Create(width, depth, std::move(heights));
+  // Cell centres at integers, as in the canyon's file.
+  absl::StatusOr<Terrain> terrain =
+      Terrain::Create(width, depth, std::move(heights), 1.0, Point2(-0.5, -0.5));
   EXPECT_TRUE(terrain.ok()) << terrain.status();
   Problem problem;
   problem.map = std::make_shared<const Map>(std::move(*terrain));
