@@ -8,6 +8,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "core/algorithms/exact/terrain_lattice_planner.h"
 #include "core/algorithms/register.h"
 #include "core/geometry/grid_collision.h"
 #include "core/graph/grid_search.h"
@@ -235,6 +236,7 @@ void RegisterExactPlanners(Registry& registry) {
                      "in astar. One iteration.",
                      true, true));
   MustRegister(registry, VisibilityGraphInfo());
+  MustRegister(registry, TerrainLatticeInfo());
 }
 
 }  // namespace swarmplan

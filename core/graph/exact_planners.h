@@ -5,8 +5,8 @@
 namespace swarmplan {
 
 // The exact reference planners as registered planners: `astar`, `dijkstra` and `theta-star` on
-// occupancy grids, `visibility-graph` on shape worlds. Each runs its search once and reports it
-// as a single iteration. Declared also in core/algorithms/register.h.
+// occupancy grids, `visibility-graph` on shape worlds, `terrain-lattice` on terrain. Each runs its
+// search once and reports it as a single iteration. Declared also in core/algorithms/register.h.
 void RegisterExactPlanners(Registry& registry);
 
 }  // namespace swarmplan
