@@ -1,7 +1,8 @@
 // The beetle antennae family (bas, lfs-bas, aco-bas, sio-bas, multi-bas) and the terrain aco.
-// On terrain the exact optimum of the paper's fitness is not available: the paths must beat a
-// feasible fly-over reference and stay within a stated factor of the straight distance (ACO
-// moves at most 2 cells per column in Y and Z, so its paths zig-zag: factor 2).
+// On terrain the exact continuous optimum of the paper's fitness is not available (terrain-lattice
+// bounds it from above only; see terrain_lattice_test.cc): the paths must beat a feasible fly-over
+// reference and stay within a stated factor of the straight distance (ACO moves at most 2 cells
+// per column in Y and Z, so its paths zig-zag: factor 2).
 
 #include <cmath>
 #include <memory>

@@ -246,6 +246,11 @@ TEST(TerrainLatticePlannerTest, RefusesWhatItCannotSearch) {
       deep, Point3(0.5, 0.5, -4), Point3(2.5, 0.5, -4), 0.5, TerrainLatticeOptions{});
   EXPECT_EQ(negative.status().code(), absl::StatusCode::kFailedPrecondition);
 
+  absl::StatusOr<TerrainLatticeResult> outside =
+      TerrainLatticeOptimum(*problem.map->terrain(), Point3(1e300, 2.5, 1), problem.goal,
+                            problem.clearance, TerrainLatticeOptions{});
+  EXPECT_EQ(outside.status().code(), absl::StatusCode::kInvalidArgument);
+
   const Registry registry = TerrainRegistry();
   Problem grid = problem;
   grid.map = std::make_shared<Map>(*OccupancyGrid::Create(4, 4, std::vector<int8_t>(16, 0)));

@@ -214,6 +214,15 @@ absl::StatusOr<TerrainLatticeResult> TerrainLatticeOptimum(const Terrain& terrai
                                                            const Point3& start, const Point3& goal,
                                                            double clearance,
                                                            const TerrainLatticeOptions& options) {
+  for (const auto& [p, field] : {std::pair{&start, "start"}, std::pair{&goal, "goal"}}) {
+    const Point2 lo = terrain.min_xy(), hi = terrain.max_xy();
+    if (!(p->x() >= lo.x() && p->y() >= lo.y() && p->x() <= hi.x() && p->y() <= hi.y()) ||
+        !std::isfinite(p->z())) {
+      return absl::InvalidArgumentError(absl::StrCat("terrain lattice: ", field, " (", p->x(), ", ",
+                                                     p->y(), ", ", p->z(),
+                                                     ") is not a point over the terrain"));
+    }
+  }
   absl::StatusOr<TerrainLatticeLevels> levels =
       MakeTerrainLatticeLevels(terrain, clearance, options);
   if (!levels.ok()) return levels.status();

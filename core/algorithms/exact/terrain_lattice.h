@@ -51,7 +51,8 @@ struct TerrainLatticeResult {
 // other directly when that segment is free. The cost is the lattice optimum: an upper bound on
 // the optimum over all paths. FAILED_PRECONDITION when the lowest level is below -cell size
 // (the height term could then make a cost negative: the objective counts heights from zero);
-// RESOURCE_EXHAUSTED above kMaxTerrainLatticeNodes.
+// RESOURCE_EXHAUSTED above kMaxTerrainLatticeNodes; INVALID_ARGUMENT for a start or goal
+// outside the map's cell-centre rectangle.
 absl::StatusOr<TerrainLatticeResult> TerrainLatticeOptimum(const Terrain& terrain,
                                                            const Point3& start, const Point3& goal,
                                                            double clearance,
