@@ -20,7 +20,7 @@ const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
 
 const char* PathColor(size_t i) { return kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))]; }
 
-// World rectangle of the map in its own coordinates (terrain: cell coordinates).
+// World rectangle of the map in world coordinates.
 struct WorldBox {
   double min_x, min_y, max_x, max_y;
 };
@@ -36,7 +36,9 @@ WorldBox MapBox(const Map& map) {
     return {b.min.x(), b.min.y(), b.max.x(), b.max.y()};
   }
   const Terrain& terrain = *map.terrain();
-  return {-0.5, -0.5, terrain.width() - 0.5, terrain.depth() - 0.5};
+  const Point2& o = terrain.origin();
+  return {o.x(), o.y(), o.x() + terrain.width() * terrain.cell_size(),
+          o.y() + terrain.depth() * terrain.cell_size()};
 }
 
 // World -> pixel mapping of the map area.
@@ -130,7 +132,8 @@ void DrawTerrain(SvgWriter& svg, const Viewport& view, const Terrain& terrain) {
   const double span = std::max(terrain.max_height() - low, 1e-12);
   svg.BeginGroup("shape-rendering=\"crispEdges\"");
   DrawCellRuns(
-      svg, view, terrain.width(), terrain.depth(), 1.0, -0.5, -0.5,
+      svg, view, terrain.width(), terrain.depth(), terrain.cell_size(), terrain.origin().x(),
+      terrain.origin().y(),
       [&](int x, int y) {
         const double h = terrain.HeightAt(x, y);
         if (std::isnan(h)) return kLevels + 1;  // no data

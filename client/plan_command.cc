@@ -148,8 +148,9 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
   CLI::App* command = app.add_subcommand(
       "plan",
       "Plan a path on a stored map, streaming progress; ends with a summary table.\n"
-      "Coordinates: world units on grids and shape worlds (grid cell (x, y) covers\n"
-      "[x, x+1) x [y, y+1) at resolution 1); fractional cell indices and a height on terrain.");
+      "Coordinates: world units on every map kind (grid cell (x, y) covers [x, x+1) x\n"
+      "[y, y+1) at resolution 1; on terrain x, y in the cell size's unit, the centre of\n"
+      "cell (i, j) at origin + (i + 1/2, j + 1/2) * cellsize, and z a height).");
   command->add_option("map", options->map_id, "Map id (see: swarmplan maps list)")->required();
   command->add_option("--start", options->start, "Start point x,y or x,y,z")->required();
   command->add_option("--goal", options->goal, "Goal point x,y or x,y,z")->required();

@@ -7,8 +7,9 @@ namespace swarmplan {
 
 // The measures every plan reports, whatever the planner.
 struct PathMetrics {
-  double length = 0.0;          // world units on 2D maps; grid units (x, y, z) on terrain
-  double min_clearance = 0.0;   // smallest distance from the path to an obstacle
+  double length = 0.0;          // world units (on terrain: x, y and z as given, see Terrain)
+  double min_clearance = 0.0;   // smallest distance from the path to an obstacle (exact on
+                                // terrain: the height above the ground; see the checkers)
   double max_curvature = 0.0;   // largest discrete curvature at an interior vertex (1/length)
   int turning_points = 0;       // interior vertices where the heading changes
   bool collision_free = false;  // every point keeps the requested clearance, inside the map

@@ -14,8 +14,9 @@ struct Limits {
 };
 
 // What to plan: immutable, owned by the caller, shared read-only with the planner.
-// Coordinates are world coordinates on 2D maps (z ignored) and grid coordinates on terrain
-// (see Terrain). `clearance` is the distance every point of the path keeps from obstacles.
+// Coordinates are world coordinates on every map kind: on 2D maps z is ignored, on a terrain
+// x and y are in the unit of its cell size and z is a height (see Terrain). `clearance` is the
+// distance every point of the path keeps from obstacles.
 struct Problem {
   MapPtr map;
   Point3 start = Point3::Zero();

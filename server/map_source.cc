@@ -156,8 +156,8 @@ v1::MapInfo DescribeMap(const Map& map) {
     info.set_width(t->width());
     info.set_height(t->depth());
     info.set_resolution(t->cell_size());
-    *info.mutable_min() = ToProto(Point3(0, 0, t->min_height()));
-    *info.mutable_max() = ToProto(Point3(t->width() - 1, t->depth() - 1, t->ceiling()));
+    *info.mutable_min() = ToProto(Point3(t->min_xy().x(), t->min_xy().y(), t->min_height()));
+    *info.mutable_max() = ToProto(Point3(t->max_xy().x(), t->max_xy().y(), t->ceiling()));
     int64_t no_data = 0;
     for (double h : t->heights()) no_data += std::isnan(h) ? 1 : 0;
     info.set_obstacle_count(no_data);

@@ -62,7 +62,7 @@ std::vector<double> CanyonHeights(const CanyonShape& shape, uint64_t seed) {
 
 std::string HeightsToAsc(int width, int depth, const std::vector<double>& heights) {
   std::string text =
-      absl::StrCat("ncols ", width, "\nnrows ", depth, "\nxllcorner 0\nyllcorner 0\ncellsize 1\n");
+      absl::StrCat("ncols ", width, "\nnrows ", depth, "\nxllcenter 0\nyllcenter 0\ncellsize 1\n");
   for (int y = depth - 1; y >= 0; --y) {
     for (int x = 0; x < width; ++x) {
       if (x > 0) text += ' ';

@@ -47,7 +47,7 @@ double RightBranchY(const CanyonShape& shape, double x);
 double LeftBranchY(const CanyonShape& shape, double x);
 
 // ESRI ASCII grid text of row-major heights (first data row the northernmost, y = depth - 1),
-// cell size 1, lower-left corner at the origin.
+// cell size 1, the centre of cell (0, 0) at the origin (so world coordinates are cell indices).
 std::string HeightsToAsc(int width, int depth, const std::vector<double>& heights);
 
 }  // namespace swarmplan::bench

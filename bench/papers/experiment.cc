@@ -10,6 +10,8 @@ const std::vector<Experiment>& Experiments() {
       {"aem-bso-worlds", "AEM-BSO Tables 2-3", "aem-bso-worlds.md", RunAemBsoWorlds,
        GenerateAemBsoWorlds},
       {"bas-canyon", "BAS Tables 2-4", "bas-canyon.md", RunBasCanyon, GenerateBasCanyon},
+      {"terrain-yardsticks", "terrain section of exact-yardsticks.md (lattice optimum on DEMs)",
+       "exact-yardsticks-terrain.md", RunTerrainYardsticks, nullptr},
       {"as-bfo-islands", "AS-BFO Table 4 and section 4.1", "as-bfo-islands.md", RunAsBfoIslands,
        GenerateAsBfoIslands},
       {"idafsa-grids", "IDAFSA Tables 2-3", "idafsa-grids.md", RunIdafsaGrids, GenerateIdafsaGrids},

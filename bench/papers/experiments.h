@@ -22,6 +22,10 @@ absl::Status GenerateAemBsoWorlds(const std::string& dir);
 absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options);
 absl::Status GenerateBasCanyon(const std::string& dir);
 
+// The terrain section of exact-yardsticks.md: the terrain-lattice optimum on the shared DEMs
+// and the terrain planners against it (terrain_yardsticks.cc).
+absl::StatusOr<std::string> RunTerrainYardsticks(const ExperimentOptions& options);
+
 // AS-BFO paper, Table 4 and the parameter sweeps of its section 4.1 (as_bfo_islands.cc).
 absl::StatusOr<std::string> RunAsBfoIslands(const ExperimentOptions& options);
 absl::Status GenerateAsBfoIslands(const std::string& dir);

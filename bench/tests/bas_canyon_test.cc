@@ -1,10 +1,10 @@
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "bench/papers/bas_canyon_lattice.h"
 #include "bench/papers/bas_canyon_terrain.h"
-#include "core/algorithms/bas/terrain_objective.h"
+#include "core/algorithms/exact/terrain_lattice.h"
 #include "core/map/io/map_io.h"
 #include "core/path_metrics.h"
 #include "gtest/gtest.h"
@@ -70,74 +70,36 @@ TEST(BasCanyonTest, AscTextLoadsAsTheSameTerrain) {
 TEST(BasCanyonTest, AscTextHasTheHeaderAndTheNorthernRowFirst) {
   const std::string text = HeightsToAsc(2, 2, {1.0, 2.0, 3.0, 4.5});
   EXPECT_EQ(text,
-            "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+            "ncols 2\nnrows 2\nxllcenter 0\nyllcenter 0\ncellsize 1\n"
             "3.00 4.50\n1.00 2.00\n");
 }
 
-Problem TerrainProblem(int width, int depth, std::vector<double> heights, const Point3& start,
-                       const Point3& goal) {
-  absl::StatusOr<Terrain> terrain = Terrain::Create(width, depth, std::move(heights));
-  EXPECT_TRUE(terrain.ok()) << terrain.status();
-  Problem problem;
-  problem.map = std::make_shared<const Map>(std::move(*terrain));
-  problem.start = start;
-  problem.goal = goal;
-  return problem;
-}
-
-TEST(BasCanyonLatticeTest, FlatGroundPathDropsToTheGroundBetweenStartAndGoal) {
-  // Ground 0 everywhere (ceiling 1): from (0, 2, 1) to (4, 2, 1) the best path drops to the
-  // ground at once and climbs at the last step: lengths sqrt(2) + 1 + 1 + sqrt(2), heights
-  // 0 + 0 + 0 + 1.
-  const Problem problem =
-      TerrainProblem(5, 5, std::vector<double>(25, 0.0), Point3(0, 2, 1), Point3(4, 2, 1));
-  absl::StatusOr<LatticePath> lattice = LatticeOptimum(problem);
-  ASSERT_TRUE(lattice.ok()) << lattice.status();
-  EXPECT_NEAR(lattice->fitness, 2 * std::sqrt(2.0) + 2 + 1, 1e-12);
-  ASSERT_EQ(lattice->path.size(), 5u);
-  for (int c = 1; c <= 3; ++c) {
-    EXPECT_EQ(lattice->path[c], Point3(c, 2, 0)) << "waypoint " << c;
-  }
-}
-
-TEST(BasCanyonLatticeTest, PathGoesThroughTheGapOfAWall) {
-  // A wall of height 5 across column 3 with one gap (height 0) at row 6.
-  const int width = 7, depth = 9;
-  std::vector<double> heights(width * depth, 0.0);
-  for (int y = 0; y < depth; ++y) heights[y * width + 3] = y == 6 ? 0.0 : 5.0;
-  const Problem problem = TerrainProblem(width, depth, heights, Point3(0, 2, 1), Point3(6, 2, 1));
-  absl::StatusOr<LatticePath> lattice = LatticeOptimum(problem);
-  ASSERT_TRUE(lattice.ok()) << lattice.status();
-  EXPECT_TRUE(EvaluatePath(*problem.map, lattice->path, 0.0).collision_free);
-  // Flying over the wall costs at least 5 per waypoint near it; the gap is cheaper.
-  EXPECT_NEAR(lattice->path[3].y(), 6.0, 0.5);
-}
-
-TEST(BasCanyonLatticeTest, FitnessIsThePlannersFitnessOfItsPath) {
+// The yardstick of the reproduction: on the canyon (world = cell coordinates), the lattice
+// optimum from mouth to mouth is collision-free and follows the deep right valley.
+TEST(BasCanyonTest, LatticeYardstickFollowsTheDeepRightValley) {
   const CanyonShape shape;
-  const std::vector<double> heights = CanyonHeights(shape, 2020);
-  const Point3 start(0, 10, heights[10 * shape.width] + 1);
-  const Point3 goal(20, 10, heights[10 * shape.width + 20] + 1);
-  const Problem problem = TerrainProblem(shape.width, shape.depth, heights, start, goal);
-  LatticeOptions options;
-  options.y_step = 1.0;
-  options.z_step = 0.5;
-  absl::StatusOr<LatticePath> lattice = LatticeOptimum(problem, options);
+  absl::StatusOr<Map> map = ParseMap(
+      "terrain-asc",
+      {{"canyon.asc", HeightsToAsc(shape.width, shape.depth, CanyonHeights(shape, 2020))}});
+  ASSERT_TRUE(map.ok()) << map.status();
+  const Terrain& terrain = *map->terrain();
+  const Point2 s(0, shape.mouth_y), g(shape.width - 1, shape.mouth_y);
+  const Point3 start(s.x(), s.y(), terrain.GroundAt(s) + 1);
+  const Point3 goal(g.x(), g.y(), terrain.GroundAt(g) + 1);
+  TerrainLatticeOptions options;
+  options.vertical_step = 1.0;
+  absl::StatusOr<TerrainLatticeResult> lattice =
+      TerrainLatticeOptimum(terrain, start, goal, 0.0, options);
   ASSERT_TRUE(lattice.ok()) << lattice.status();
-  absl::StatusOr<std::unique_ptr<TerrainObjective>> objective =
-      TerrainObjective::Create(problem, 100.0);
-  ASSERT_TRUE(objective.ok()) << objective.status();
-  Eigen::VectorXd x(2 * (lattice->path.size() - 2));
-  for (size_t k = 1; k + 1 < lattice->path.size(); ++k) {
-    x[2 * (k - 1)] = lattice->path[k].y();
-    x[2 * (k - 1) + 1] = lattice->path[k].z();
+  ASSERT_FALSE(lattice->path.empty());
+  EXPECT_EQ(lattice->path.front(), start);
+  EXPECT_EQ(lattice->path.back(), goal);
+  EXPECT_TRUE(EvaluatePath(*map, lattice->path, 0.0).collision_free);
+  double deepest_y = 0.0;
+  for (const Point3& p : lattice->path) {
+    if (std::abs(p.x() - (shape.width - 1) / 2.0) <= 0.5) deepest_y = std::max(deepest_y, p.y());
   }
-  const Evaluation evaluation = (*objective)->Evaluate(x);
-  EXPECT_TRUE(evaluation.feasible);
-  EXPECT_NEAR(evaluation.fitness, lattice->fitness, 1e-9);
-  EXPECT_TRUE(EvaluatePath(*problem.map, lattice->path, 0.0).collision_free);
-  // The optimum follows the deep right valley.
-  EXPECT_GT(lattice->path[10].y(), shape.mouth_y);
+  EXPECT_GT(deepest_y, shape.mouth_y);
 }
 
 }  // namespace

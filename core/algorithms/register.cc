@@ -11,6 +11,7 @@
 #include "core/algorithms/bso/bso_planners.h"
 #include "core/algorithms/exact/exact_any_angle.h"
 #include "core/algorithms/exact/exact_planners.h"
+#include "core/algorithms/exact/terrain_lattice_planner.h"
 #include "core/algorithms/pso/pso_planner.h"
 
 namespace swarmplan {
@@ -20,6 +21,7 @@ absl::Status RegisterAllPlanners(Registry& registry) {
   std::vector<PlannerInfo> infos = {
       // Exact planners: the yardsticks.
       ExactAnyAngleInfo(), AStarInfo(), DijkstraInfo(), ThetaStarInfo(), VisibilityGraphInfo(),
+      TerrainLatticeInfo(),
       // Beetle swarms and their baselines over spline waypoints.
       BsoInfo(), AemBsoInfo(), AemBsoLinearInfo(), PsoInfo(), BatInfo(),
       // The beetle antennae family (terrain and 2D) and its ACO baseline.

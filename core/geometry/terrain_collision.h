@@ -5,26 +5,21 @@
 
 namespace swarmplan {
 
-// Collision checking on a Terrain, in grid coordinates (x, y fractional cell indices, z a
-// height). Clearance is the height above the bilinear ground, z - GroundAt(x, y). The map is
-// 0 <= x <= width - 1, 0 <= y <= depth - 1, z <= ceiling: outside it, and wherever the ground
-// has no data, clearance is -infinity. The ceiling bounds the map; it is not an obstacle.
+// Collision checking on a Terrain, in world coordinates (see Terrain). Clearance is the height
+// above the bilinear ground, z - GroundAt(x, y). The map is the cell-centre rectangle
+// min_xy() .. max_xy() up to the ceiling: outside it, and wherever the ground has no data,
+// clearance is -infinity. The ceiling bounds the map; it is not an obstacle.
 class TerrainCollisionChecker final : public CollisionChecker {
  public:
-  // Segments are sampled at most this far apart (in cells, horizontally), endpoints included.
-  static constexpr double kSampleStep = 0.25;
-
   explicit TerrainCollisionChecker(const Terrain& terrain) : terrain_(terrain) {}
 
   double Clearance(const Point3& p) const override;
-  // Smallest clearance over the samples.
+  // Exact: the smallest height above the ground along the segment. The segment is split where
+  // it crosses the lines between cell centres; over each piece the bilinear ground is a
+  // quadratic in the segment's parameter, minimised in closed form.
   double SegmentClearance(const Point3& a, const Point3& b) const override;
-  bool SegmentFree(const Point3& a, const Point3& b, double clearance) const override;
 
  private:
-  template <typename Visit>
-  void ForEachSample(const Point3& a, const Point3& b, Visit&& visit) const;
-
   const Terrain& terrain_;
 };
 

@@ -52,6 +52,7 @@ absl::StatusOr<Terrain> Terrain::Create(int width, int depth, std::vector<double
   t.depth_ = depth;
   t.cell_size_ = cell_size;
   t.origin_ = origin;
+  t.first_centre_ = origin + Point2::Constant(cell_size / 2);
   t.ceiling_ = ceiling;
   t.min_height_ = lo;
   t.max_height_ = hi;
@@ -59,7 +60,7 @@ absl::StatusOr<Terrain> Terrain::Create(int width, int depth, std::vector<double
   return t;
 }
 
-double Terrain::GroundAt(double x, double y) const {
+double Terrain::GroundAtCell(double x, double y) const {
   if (!(x >= 0 && y >= 0 && x <= width_ - 1 && y <= depth_ - 1)) {
     return std::numeric_limits<double>::quiet_NaN();
   }

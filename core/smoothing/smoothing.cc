@@ -20,7 +20,7 @@ double SplineSpacing(const Map& map) {
   if (const ShapeWorld* world = map.world()) {
     return std::max(world->bounds().Width(), world->bounds().Height()) / 500.0;
   }
-  return 0.5;
+  return 0.5 * map.terrain()->cell_size();
 }
 
 }  // namespace

@@ -165,6 +165,14 @@ TEST_F(MapsTest, StructuredShapeWorldAndTerrainUpload) {
   EXPECT_EQ(response.map().kind(), v1::MAP_KIND_TERRAIN);
   EXPECT_EQ(response.map().width(), 3);
   EXPECT_EQ(response.map().height(), 2);
+  // The extent in world coordinates: the first and the last cell centre (unit cells, corner at
+  // the origin), from the lowest ground to the ceiling.
+  EXPECT_EQ(response.map().min().x(), 0.5);
+  EXPECT_EQ(response.map().min().y(), 0.5);
+  EXPECT_EQ(response.map().min().z(), 0.0);
+  EXPECT_EQ(response.map().max().x(), 2.5);
+  EXPECT_EQ(response.map().max().y(), 1.5);
+  EXPECT_EQ(response.map().max().z(), 6.0);
 }
 
 }  // namespace

@@ -359,23 +359,36 @@ TEST(ShapeCollisionTest, SegmentClearanceMatchesDenseSamplingOnRandomWorlds) {
 
 // --- Terrain ---------------------------------------------------------------------------------
 
-TEST(TerrainCollisionTest, HeightAboveBilinearGround) {
-  // h = x + 2 y on a 3 x 3 grid; ceiling 20.
+// The terrains below have cells of 2 world units with the lower-left corner at (10, 20): the
+// centre of cell (i, j) is at (11 + 2 i, 21 + 2 j). W places a point by its cell coordinates.
+constexpr double kCell = 2.0;
+const Point2 kOrigin(10.0, 20.0);
+Point3 W(double i, double j, double z) {
+  return Point3(kOrigin.x() + (i + 0.5) * kCell, kOrigin.y() + (j + 0.5) * kCell, z);
+}
+
+TEST(TerrainCollisionTest, HeightAboveBilinearGroundInWorldCoordinates) {
+  // h = x + 2 y (cell indices) on a 3 x 3 grid; ceiling 20.
   std::vector<double> h;
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 3; ++x) h.push_back(x + 2.0 * y);
   }
-  const Terrain terrain = *Terrain::Create(3, 3, h, 1.0, Point2::Zero(), 20.0);
+  const Terrain terrain = *Terrain::Create(3, 3, h, kCell, kOrigin, 20.0);
+  EXPECT_EQ(terrain.CellCentre(1, 2), Point2(13, 25));
+  EXPECT_EQ(terrain.ToCell(Point2(12, 24)), Point2(0.5, 1.5));
+  EXPECT_EQ(terrain.min_xy(), Point2(11, 21));
+  EXPECT_EQ(terrain.max_xy(), Point2(15, 25));
   TerrainCollisionChecker checker(terrain);
-  EXPECT_DOUBLE_EQ(checker.Clearance(P(1, 1, 10)), 7.0);
-  EXPECT_DOUBLE_EQ(checker.Clearance(P(0.5, 0.5, 5)), 3.5);
-  EXPECT_DOUBLE_EQ(checker.Clearance(P(2, 2, 5)), -1.0);
-  EXPECT_EQ(checker.Clearance(P(2.1, 1, 10)), -kInf);
-  EXPECT_EQ(checker.Clearance(P(1, -0.1, 10)), -kInf);
-  EXPECT_EQ(checker.Clearance(P(1, 1, 20.5)), -kInf);
-  EXPECT_DOUBLE_EQ(checker.SegmentClearance(P(0, 0, 10), P(2, 2, 10)), 4.0);
-  EXPECT_TRUE(checker.SegmentFree(P(0, 0, 10), P(2, 2, 10), 4.0));
-  EXPECT_FALSE(checker.SegmentFree(P(0, 0, 10), P(2, 2, 10), 4.1));
+  EXPECT_DOUBLE_EQ(checker.Clearance(P(13, 23, 10)), 7.0);  // the centre of cell (1, 1)
+  EXPECT_DOUBLE_EQ(checker.Clearance(W(0.5, 0.5, 5)), 3.5);
+  EXPECT_DOUBLE_EQ(checker.Clearance(W(2, 2, 5)), -1.0);
+  EXPECT_EQ(checker.Clearance(W(2.1, 1, 10)), -kInf);
+  EXPECT_EQ(checker.Clearance(W(1, -0.1, 10)), -kInf);
+  EXPECT_EQ(checker.Clearance(P(10.5, 23, 10)), -kInf);  // inside cell 0 but outside its centre
+  EXPECT_EQ(checker.Clearance(W(1, 1, 20.5)), -kInf);
+  EXPECT_DOUBLE_EQ(checker.SegmentClearance(W(0, 0, 10), W(2, 2, 10)), 4.0);
+  EXPECT_TRUE(checker.SegmentFree(W(0, 0, 10), W(2, 2, 10), 4.0));
+  EXPECT_FALSE(checker.SegmentFree(W(0, 0, 10), W(2, 2, 10), 4.1));
 }
 
 TEST(TerrainCollisionTest, RidgeAndNoData) {
@@ -384,15 +397,52 @@ TEST(TerrainCollisionTest, RidgeAndNoData) {
   std::vector<double> h(5 * 3, 0.0);
   for (int y = 0; y < 3; ++y) h[y * 5 + 2] = 10.0;
   h[4] = nan;
-  const Terrain terrain = *Terrain::Create(5, 3, h, 1.0, Point2::Zero(), 30.0);
+  const Terrain terrain = *Terrain::Create(5, 3, h, kCell, kOrigin, 30.0);
   TerrainCollisionChecker checker(terrain);
-  EXPECT_FALSE(checker.SegmentFree(P(0, 1, 5), P(4, 1, 5), 0.0));
-  EXPECT_TRUE(checker.SegmentFree(P(0, 1, 11), P(4, 1, 11), 0.5));
-  EXPECT_DOUBLE_EQ(checker.SegmentClearance(P(0, 1, 11), P(4, 1, 11)), 1.0);
-  EXPECT_EQ(checker.Clearance(P(3.5, 0.5, 11)), -kInf);  // a corner has no data
-  EXPECT_DOUBLE_EQ(checker.Clearance(P(3.5, 1.5, 11)), 11.0);
-  EXPECT_FALSE(checker.SegmentFree(P(0, 0, 11), P(4, 0, 11), 0.0));
-  EXPECT_EQ(checker.SegmentClearance(P(0, 0, 11), P(4, 0, 11)), -kInf);
+  EXPECT_FALSE(checker.SegmentFree(W(0, 1, 5), W(4, 1, 5), 0.0));
+  EXPECT_TRUE(checker.SegmentFree(W(0, 1, 11), W(4, 1, 11), 0.5));
+  EXPECT_DOUBLE_EQ(checker.SegmentClearance(W(0, 1, 11), W(4, 1, 11)), 1.0);
+  EXPECT_EQ(checker.Clearance(W(3.5, 0.5, 11)), -kInf);  // a corner has no data
+  EXPECT_DOUBLE_EQ(checker.Clearance(W(3.5, 1.5, 11)), 11.0);
+  EXPECT_FALSE(checker.SegmentFree(W(0, 0, 11), W(4, 0, 11), 0.0));
+  EXPECT_EQ(checker.SegmentClearance(W(0, 0, 11), W(4, 0, 11)), -kInf);
+  EXPECT_EQ(checker.SegmentClearance(W(0, 1, 11), W(4, 1, 31)), -kInf);  // above the ceiling
+}
+
+TEST(TerrainCollisionTest, SegmentClearanceIsExactInsideACell) {
+  // A saddle: corners 0 and 0 on one diagonal, 1 and 1 on the other. Along the first diagonal
+  // the ground is 2t - 2t^2, highest (0.5) in the middle, where no end of the segment is.
+  const Terrain terrain = *Terrain::Create(2, 2, {0, 1, 1, 0}, kCell, kOrigin, 5.0);
+  TerrainCollisionChecker checker(terrain);
+  EXPECT_NEAR(checker.SegmentClearance(W(0, 0, 0.6), W(1, 1, 0.6)), 0.1, 1e-15);
+  EXPECT_FALSE(checker.SegmentFree(W(0, 0, 0.6), W(1, 1, 0.6), 0.11));
+  EXPECT_TRUE(checker.SegmentFree(W(0, 0, 0.6), W(1, 1, 0.6), 0.1 - 1e-12));
+  // Rising with the ground: the clearance is z - g = 0.6 + 0.5 t - 2t + 2t^2, least at t = 3/8.
+  EXPECT_NEAR(checker.SegmentClearance(W(0, 0, 0.6), W(1, 1, 1.1)), 0.6 - 9.0 / 32, 1e-15);
+}
+
+TEST(TerrainCollisionTest, SegmentClearanceMatchesDenseSamplingOnRandomTerrains) {
+  Rng rng(17);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int width = 6, depth = 5;
+    std::vector<double> h(width * depth);
+    for (double& v : h) v = rng.Uniform(0.0, 4.0);
+    const Terrain terrain = *Terrain::Create(width, depth, h, kCell, kOrigin, 20.0);
+    TerrainCollisionChecker checker(terrain);
+    for (int s = 0; s < 20; ++s) {
+      const Point3 a = W(rng.Uniform(0, width - 1), rng.Uniform(0, depth - 1), rng.Uniform(0, 8));
+      const Point3 b = W(rng.Uniform(0, width - 1), rng.Uniform(0, depth - 1), rng.Uniform(0, 8));
+      const double exact = checker.SegmentClearance(a, b);
+      double sampled = kInf;
+      const int samples = 20000;
+      for (int k = 0; k <= samples; ++k) {
+        sampled = std::min(sampled, checker.Clearance(a + (b - a) * (double(k) / samples)));
+      }
+      // Never above a sample; the samples come within their spacing's reach of it.
+      EXPECT_LE(exact, sampled + 1e-12) << "trial " << trial << " segment " << s;
+      EXPECT_NEAR(exact, sampled, 2e-3) << "trial " << trial << " segment " << s;
+    }
+  }
 }
 
 // --- Shared ----------------------------------------------------------------------------------

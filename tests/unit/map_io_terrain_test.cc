@@ -35,8 +35,11 @@ TEST(MapIoTerrainAscTest, ReadsHeaderAndRowsNorthFirst) {
   EXPECT_EQ(t->width(), 3);
   EXPECT_EQ(t->depth(), 2);
   EXPECT_EQ(t->cell_size(), 1.0);
-  EXPECT_EQ(t->origin(), Point2(100.0, 200.0));  // centre of the SW cell minus half a cell
-  EXPECT_EQ(t->HeightAt(0, 1), 10.0);            // first value of the file: the NW corner
+  EXPECT_EQ(t->origin(), Point2(100.0, 200.0));          // centre of the SW cell minus half a cell
+  EXPECT_EQ(t->CellCentre(0, 0), Point2(100.5, 200.5));  // the file's xllcenter, yllcenter
+  EXPECT_EQ(t->max_xy(), Point2(102.5, 201.5));
+  EXPECT_DOUBLE_EQ(t->GroundAt(Point2(101, 201.5)), (10.0 + 11.5) / 2);
+  EXPECT_EQ(t->HeightAt(0, 1), 10.0);  // first value of the file: the NW corner
   EXPECT_EQ(t->HeightAt(1, 1), 11.5);
   EXPECT_TRUE(std::isnan(t->HeightAt(2, 1)));  // NODATA
   EXPECT_EQ(t->HeightAt(0, 0), 20.0);          // last line: the south row
@@ -53,6 +56,8 @@ TEST(MapIoTerrainAscTest, CornerOriginCrlfAndNoNodata) {
   EXPECT_EQ(map->terrain()->origin(), Point2(-5, 7));
   EXPECT_EQ(map->terrain()->HeightAt(1, 0), 4.0);
   EXPECT_EQ(map->terrain()->cell_size(), 2.5);
+  EXPECT_EQ(map->terrain()->CellCentre(1, 1), Point2(-5 + 1.5 * 2.5, 7 + 1.5 * 2.5));
+  EXPECT_EQ(map->terrain()->ToCell(Point2(-5 + 1.25, 7 + 2.5)), Point2(0, 0.5));
 }
 
 TEST(MapIoTerrainAscTest, CeilingOption) {

@@ -72,13 +72,24 @@ TEST(PathMetricsTest, CollisionAndEmptyPath) {
   EXPECT_FALSE(outside.collision_free);
 }
 
-TEST(PathMetricsTest, TerrainLengthInGridUnits) {
+TEST(PathMetricsTest, TerrainLengthInWorldUnits) {
+  // Cells of 30 m, lower-left corner at the origin: cell centres at x, y = 15, 45, 75.
   const Map map(*Terrain::Create(3, 3, std::vector<double>(9, 0.0), 30.0, Point2::Zero(), 10.0));
-  const PathMetrics m = EvaluatePath(map, {P(0, 0, 1), P(2, 0, 1), P(2, 2, 3)}, 0.5);
-  EXPECT_NEAR(m.length, 2.0 + std::sqrt(8.0), 1e-12);
+  const PathMetrics m = EvaluatePath(map, {P(15, 15, 1), P(75, 15, 1), P(75, 75, 3)}, 0.5);
+  EXPECT_NEAR(m.length, 60.0 + std::sqrt(3600.0 + 4.0), 1e-12);
   EXPECT_EQ(m.turning_points, 1);
   EXPECT_TRUE(m.collision_free);
   EXPECT_DOUBLE_EQ(m.min_clearance, 1.0);
+}
+
+TEST(PathMetricsTest, TerrainMinClearanceIsExactBetweenVertices) {
+  // A ridge 4 high along the middle column: a path from 5 above the ground on one side to the
+  // other passes 1 above the ridge top, half way between its vertices.
+  const Map map(*Terrain::Create(3, 2, {0, 4, 0, 0, 4, 0}, 10.0, Point2::Zero(), 20.0));
+  const PathMetrics m = EvaluatePath(map, {P(5, 5, 5), P(25, 5, 5)}, 0.0);
+  EXPECT_DOUBLE_EQ(m.min_clearance, 1.0);
+  EXPECT_TRUE(m.collision_free);
+  EXPECT_FALSE(EvaluatePath(map, {P(5, 5, 3), P(25, 5, 3)}, 0.0).collision_free);
 }
 
 TEST(PathLengthTest, Polyline) {

@@ -26,9 +26,21 @@ struct BasVariant {
 
 std::vector<ParamSpec> TerrainPenaltyParam() {
   return {ParamSpec::Double("terrain_penalty", 100.0, 0.0, 1e12, "",
-                            "fitness added per unit of depth below ground + clearance, summed "
-                            "over samples every quarter cell (terrain only)")
+                            "fitness added per height unit of depth below ground + clearance, "
+                            "summed over samples every quarter cell (terrain only)")
               .Ours()};
+}
+
+// The lengths the paper gives in cells (step, rationality step, band widening), in world units
+// on a terrain: times its cell size, so a terrain of unit cells runs the paper's numbers.
+BeetleAntennaeOptions InWorldUnits(BeetleAntennaeOptions options, const PathObjective& objective) {
+  const auto* terrain = dynamic_cast<const TerrainObjective*>(&objective);
+  if (terrain == nullptr) return options;
+  const double cell = terrain->terrain().cell_size();
+  options.step0 *= cell;
+  options.theta0 *= cell;
+  options.band_step *= cell;
+  return options;
 }
 
 std::vector<ParamSpec> AcoParams() {
@@ -37,8 +49,10 @@ std::vector<ParamSpec> AcoParams() {
       ParamSpec::Double("aco_alpha", 1.0, 0.0, 10.0, "", "pheromone exponent").Ours(),
       ParamSpec::Double("local_keep", 0.5, 0.0, 1.0, "",
                         "local update tau <- local_keep * tau on visited cells"),
-      ParamSpec::Double("global_keep", 0.8, 0.0, 1.0, "",
-                        "global update tau <- global_keep * tau + (1 - global_keep) q / f_best"),
+      ParamSpec::Double(
+          "global_keep", 0.8, 0.0, 1.0, "",
+          "global update tau <- global_keep * tau + (1 - global_keep) q s / f_best, s the cell "
+          "size"),
       ParamSpec::Double("q", 100.0, 0.0, 1e9, "", "pheromone deposit constant"),
   };
 }
@@ -71,15 +85,18 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
     specs.push_back(
         ParamSpec::Int("population", v.population, 1, 10000, "", "beetles").PopulationSize());
   }
-  specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells", "initial step delta0"));
+  specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells",
+                                    "initial step delta0 (on a terrain: times its cell size)"));
   specs.push_back(ParamSpec::Double("step_decay", 0.998, 0.0, 1.0, "", "lambda1: delta decay"));
   specs.push_back(ParamSpec::Double("c", 2.0, 1e-9, 1e9, "", "antennae length d = delta / c"));
   specs.push_back(ParamSpec::Double("theta0", 21.0, 0.0, 1e9, "cells",
-                                    "initial rationality step (terrain, eq 13)"));
+                                    "initial rationality step (terrain, eq 13; times its cell "
+                                    "size)"));
   specs.push_back(
       ParamSpec::Double("theta_decay", 0.998, 0.0, 1.0, "", "lambda2: theta decay (eq 14)"));
   specs.push_back(ParamSpec::Double("band_step", 0.5, 1e-9, 1e9, "cells",
-                                    "c': widening of the initial band C_ini per failed draw")
+                                    "c': widening of the initial band C_ini per failed draw (on a "
+                                    "terrain: times its cell size)")
                       .Ours());
   AppendParams(specs, TerrainPenaltyParam());
   if (v.lfs) {
@@ -158,7 +175,8 @@ std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& par
           double mean = 0.0;
           seed = colony->Generation(rng, best, mean, initial_evaluations);
         }
-        SearchOutcome out = RunBeetleAntennae(objective, options, t_max, rng, stop, observer, seed);
+        SearchOutcome out = RunBeetleAntennae(objective, InWorldUnits(options, objective), t_max,
+                                              rng, stop, observer, seed);
         out.evaluations += initial_evaluations;
         return out;
       },
@@ -190,7 +208,8 @@ PlannerInfo TerrainAcoInfo() {
       "Ant colony on a terrain, the baseline of seed 000: ants build one waypoint per column "
       "from the 5 x 5 (Y, Z) neighbourhood of the previous one, weighted by pheromone and "
       "H = S x D x M (validity, short steps toward the goal, low flight); local and global "
-      "pheromone updates. Ours: the exact D and M terms, tau_min = 1e-3, unit height levels.";
+      "pheromone updates. Ours: the exact D and M terms, tau_min = 1e-3, height levels one cell "
+      "size apart.";
   info.seed_paper = citations::kBeetleAntennae3d;
   info.encoding = Encoding::kColumns;
   info.map_kinds = {MapKind::kTerrain};
@@ -218,9 +237,10 @@ PlannerInfo TerrainAcoInfo() {
 namespace {
 
 constexpr char kModel[] =
-    " On a terrain: one waypoint (Y, Z) per column, fitness sum(sqrt(1 + dY^2 + dZ^2) + Z) "
-    "plus a penalty for flying below ground + clearance (ours), path rationality check "
-    "(eqs 13-14), first path drawn from the widening band C_ini (c' = 0.5 cells, ours). On 2D "
+    " On a terrain (world units; lengths given in cells are times the cell size s): one "
+    "waypoint (Y, Z) per column, fitness sum(sqrt(s^2 + dY^2 + dZ^2) + Z) plus a penalty for "
+    "flying below ground + clearance (ours), path rationality check (eqs 13-14), first path "
+    "drawn from the widening band C_ini (c' = 0.5 cells, ours). On 2D "
     "maps: k = 2 waypoints joined by a cubic spline, fitness L (1 + M xi), optional PSO mix "
     "(eq 19).";
 

@@ -10,14 +10,15 @@ namespace swarmplan {
 absl::StatusOr<TerrainAco> TerrainAco::Create(TerrainObjective& objective,
                                               const TerrainAcoOptions& options) {
   const Terrain& terrain = objective.terrain();
-  const int levels = static_cast<int>(std::floor(terrain.ceiling() - terrain.min_height())) + 1;
-  const double cells = static_cast<double>(objective.columns()) * terrain.depth() * levels;
+  const double span = (terrain.ceiling() - terrain.min_height()) / terrain.cell_size();
+  const double cells = static_cast<double>(objective.columns()) * terrain.depth() * (span + 1);
   if (cells > 32.0 * 1024 * 1024) {
     return absl::ResourceExhaustedError(
         absl::StrCat("terrain aco: the pheromone table would hold ", cells,
-                     " cells (columns x rows x height levels); the limit is 32M"));
+                     " cells (columns x rows x height levels one cell size apart); the limit "
+                     "is 32M"));
   }
-  return TerrainAco(objective, options, levels);
+  return TerrainAco(objective, options, static_cast<int>(std::floor(span)) + 1);
 }
 
 TerrainAco::TerrainAco(TerrainObjective& objective, const TerrainAcoOptions& options, int levels)
@@ -26,6 +27,7 @@ TerrainAco::TerrainAco(TerrainObjective& objective, const TerrainAcoOptions& opt
       depth_(objective.terrain().depth()),
       levels_(levels),
       base_(objective.terrain().min_height()),
+      step_(objective.terrain().cell_size()),
       tau_(static_cast<size_t>(objective.columns()) * depth_ * levels, 1.0) {}
 
 Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
@@ -44,8 +46,10 @@ Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
   };
   std::vector<Candidate> candidates;
   for (int a = 0; a < options_.ants; ++a) {
-    int y = std::clamp(static_cast<int>(std::lround(obj.start().y())), 0, depth_ - 1);
-    int level = std::clamp(static_cast<int>(std::lround(obj.start().z() - base_)), 0, levels_ - 1);
+    int y = std::clamp(static_cast<int>(std::lround(terrain.ToCell(obj.start().head<2>()).y())), 0,
+                       depth_ - 1);
+    int level = std::clamp(static_cast<int>(std::lround((obj.start().z() - base_) / step_)), 0,
+                           levels_ - 1);
     Point3 prev = obj.start();
     for (int k = 0; k < columns; ++k) {
       const double x = obj.ColumnX(k);
@@ -56,11 +60,12 @@ Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
         for (int dz = -2; dz <= 2; ++dz) {
           const int ny = y + dy, nl = level + dz;
           if (ny < 0 || ny >= depth_ || nl < 0 || nl >= levels_) continue;
-          const Point3 p(x, ny, LevelZ(nl));
-          const double ground = terrain.GroundAt(x, ny);
+          const Point3 p(x, RowY(ny), LevelZ(nl));
+          const double ground = terrain.GroundAt(p.head<2>());
           const double step = (p - prev).norm();
-          const double d = 1.0 / (step + std::abs(ny - obj.goal().y()) / (left + 1));
-          const double m = std::isnan(ground) ? 0.0 : 1.0 / (1.0 + std::max(0.0, p.z() - ground));
+          const double d = 1.0 / (step + std::abs(p.y() - obj.goal().y()) / (left + 1));
+          const double m =
+              std::isnan(ground) ? 0.0 : step_ / (step_ + std::max(0.0, p.z() - ground));
           const bool valid = obj.SegmentViolation(prev, p) == 0.0;
           const double w = valid ? std::pow(tau_[Index(k, ny, nl)], options_.alpha) * d * m : 0.0;
           candidates.push_back({ny, nl, w, d * m});
@@ -82,10 +87,10 @@ Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
       }
       y = candidates[pick].y;
       level = candidates[pick].level;
-      ant[2 * k] = y;
+      ant[2 * k] = RowY(y);
       ant[2 * k + 1] = LevelZ(level);
       visited.push_back(Index(k, y, level));
-      prev = Point3(x, y, LevelZ(level));
+      prev = Point3(x, RowY(y), LevelZ(level));
     }
     const Evaluation e = objective_->Evaluate(ant);
     ++evaluations;
@@ -101,10 +106,13 @@ Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
     best_x_ = generation_best;
     has_best_ = true;
   }
-  const double deposit = (1.0 - options_.global_keep) * options_.q / std::max(best_f_, 1e-9);
+  // q per cell size of fitness: the same pheromone on a terrain scaled in every length.
+  const double deposit =
+      (1.0 - options_.global_keep) * options_.q * step_ / std::max(best_f_, 1e-9);
   for (int k = 0; k < columns; ++k) {
-    const int yy = static_cast<int>(std::lround(best_x_[2 * k]));
-    const int ll = static_cast<int>(std::lround(best_x_[2 * k + 1] - base_));
+    const int yy =
+        static_cast<int>(std::lround(terrain.ToCell(Point2(obj.ColumnX(k), best_x_[2 * k])).y()));
+    const int ll = static_cast<int>(std::lround((best_x_[2 * k + 1] - base_) / step_));
     double& t = tau_[Index(k, yy, ll)];
     t = std::max(options_.tau_min, options_.global_keep * t + deposit);
   }

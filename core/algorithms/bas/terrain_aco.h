@@ -11,14 +11,15 @@
 namespace swarmplan {
 
 // The column-by-column ant colony of seed 000 (the `aco` baseline and the ACO-BAS initialiser).
-// Ants move from (Y, Z) at one column to the 5 x 5 candidates Y + {-2..2}, Z + {-2..2} (Z in
-// unit height levels above the lowest ground) at the next, with weight tau^alpha * S * D * M:
-// S = 1 when the step keeps the clearance, else 0; D = 1 / (step length + |Y - Y_goal| /
-// (columns left + 1)) favours short steps toward the goal; M = 1 / (1 + height above ground)
-// favours low flight (D and M are ours; the paper only names them). When no candidate is valid
+// Ants move from (Y, Z) at one column to the 5 x 5 candidates Y + {-2..2} rows, Z + {-2..2}
+// height levels (levels one cell size apart, from the lowest ground: the paper's unit cells) at
+// the next, with weight tau^alpha * S * D * M: S = 1 when the step keeps the clearance, else 0;
+// D = 1 / (step length + |Y - Y_goal| / (columns left + 1)) favours short steps toward the
+// goal; M = s / (s + height above ground), s the cell size, favours low flight (D and M are
+// ours; the paper only names them). When no candidate is valid
 // the ant takes the best one by D * M. After a generation, tau <- local_keep * tau on every cell
-// an ant visited, then tau <- global_keep * tau + (1 - global_keep) * q / f_best along the best
-// path so far; tau stays >= tau_min.
+// an ant visited, then tau <- global_keep * tau + (1 - global_keep) * q * s / f_best along the
+// best path so far (s the cell size: f_best is in world units); tau stays >= tau_min.
 struct TerrainAcoOptions {
   int ants = 20;
   double alpha = 1.0;
@@ -47,13 +48,15 @@ class TerrainAco {
   size_t Index(int column, int y, int level) const {
     return (static_cast<size_t>(column) * depth_ + y) * levels_ + level;
   }
-  double LevelZ(int level) const { return base_ + level; }
+  double LevelZ(int level) const { return base_ + level * step_; }
+  double RowY(int row) const { return objective_->terrain().CellCentre(0, row).y(); }
 
   TerrainObjective* objective_;
   TerrainAcoOptions options_;
   int depth_ = 0;
   int levels_ = 0;
   double base_ = 0.0;
+  double step_ = 1.0;  // between height levels: the cell size
   std::vector<double> tau_;
   Eigen::VectorXd best_x_;
   double best_f_ = 0.0;

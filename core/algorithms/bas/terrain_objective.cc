@@ -3,9 +3,16 @@
 #include <cmath>
 
 #include "absl/strings/str_cat.h"
+#include "core/operators/terrain_path_cost.h"
 #include "core/random.h"
 
 namespace swarmplan {
+namespace {
+
+// The penalty samples every segment at most this many cells apart horizontally.
+constexpr double kSampleStepInCells = 0.25;
+
+}  // namespace
 
 absl::StatusOr<std::unique_ptr<TerrainObjective>> TerrainObjective::Create(const Problem& problem,
                                                                            double penalty) {
@@ -13,19 +20,23 @@ absl::StatusOr<std::unique_ptr<TerrainObjective>> TerrainObjective::Create(const
   if (terrain == nullptr) {
     return absl::InvalidArgumentError("terrain path: the map is not a terrain");
   }
-  const int sx = static_cast<int>(std::lround(problem.start.x()));
-  const int gx = static_cast<int>(std::lround(problem.goal.x()));
+  for (const auto& [p, field] :
+       {std::pair{&problem.start, "start"}, std::pair{&problem.goal, "goal"}}) {
+    const Point2 lo = terrain->min_xy(), hi = terrain->max_xy();
+    if (!(p->x() >= lo.x() && p->y() >= lo.y() && p->x() <= hi.x() && p->y() <= hi.y())) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("terrain path: ", field, " (", p->x(), ", ", p->y(),
+                       ") is outside the terrain's cell "
+                       "centres (",
+                       lo.x(), ", ", lo.y(), ") .. (", hi.x(), ", ", hi.y(), ")"));
+    }
+  }
+  const int sx = static_cast<int>(std::lround(terrain->ToCell(problem.start.head<2>()).x()));
+  const int gx = static_cast<int>(std::lround(terrain->ToCell(problem.goal.head<2>()).x()));
   if (std::abs(gx - sx) < 2) {
     return absl::InvalidArgumentError(absl::StrCat(
         "terrain path: start (column ", sx, ") and goal (column ", gx,
         ") must be at least two columns apart (one waypoint per column between them)"));
-  }
-  for (const Point3* p : {&problem.start, &problem.goal}) {
-    if (p->x() < 0 || p->y() < 0 || p->x() > terrain->width() - 1 ||
-        p->y() > terrain->depth() - 1) {
-      return absl::InvalidArgumentError(
-          absl::StrCat("terrain path: start/goal (", p->x(), ", ", p->y(), ") outside the grid"));
-    }
   }
   return std::unique_ptr<TerrainObjective>(new TerrainObjective(*terrain, problem, penalty));
 }
@@ -36,8 +47,8 @@ TerrainObjective::TerrainObjective(const Terrain& terrain, const Problem& proble
       goal_(problem.goal),
       clearance_(problem.clearance),
       penalty_(penalty) {
-  const int sx = static_cast<int>(std::lround(start_.x()));
-  const int gx = static_cast<int>(std::lround(goal_.x()));
+  const int sx = static_cast<int>(std::lround(terrain.ToCell(start_.head<2>()).x()));
+  const int gx = static_cast<int>(std::lround(terrain.ToCell(goal_.head<2>()).x()));
   direction_ = gx > sx ? 1 : -1;
   first_column_ = sx + direction_;
   columns_ = std::abs(gx - sx) - 1;
@@ -45,8 +56,8 @@ TerrainObjective::TerrainObjective(const Terrain& terrain, const Problem& proble
   lower_.resize(2 * columns_);
   upper_.resize(2 * columns_);
   for (int k = 0; k < columns_; ++k) {
-    lower_[2 * k] = 0.0;
-    upper_[2 * k] = terrain.depth() - 1;
+    lower_[2 * k] = terrain.min_xy().y();
+    upper_[2 * k] = terrain.max_xy().y();
     lower_[2 * k + 1] = terrain.min_height();
     upper_[2 * k + 1] = terrain.ceiling();
   }
@@ -54,11 +65,12 @@ TerrainObjective::TerrainObjective(const Terrain& terrain, const Problem& proble
 
 double TerrainObjective::SegmentViolation(const Point3& a, const Point3& b) const {
   const double horizontal = (b.head<2>() - a.head<2>()).norm();
-  const int steps = std::max(1, static_cast<int>(std::ceil(horizontal * 4.0)));
+  const int steps = std::max(
+      1, static_cast<int>(std::ceil(horizontal / (kSampleStepInCells * terrain_.cell_size()))));
   double violation = 0.0;
   for (int s = 1; s <= steps; ++s) {
     const Point3 p = a + (b - a) * (static_cast<double>(s) / steps);
-    const double ground = terrain_.GroundAt(p.x(), p.y());
+    const double ground = terrain_.GroundAt(p.head<2>());
     if (std::isnan(ground)) {
       violation += no_data_violation_;
       continue;
@@ -75,7 +87,7 @@ Evaluation TerrainObjective::Evaluate(const Eigen::VectorXd& x) {
   Point3 prev = start_;
   for (int k = 0; k <= columns_; ++k) {
     const Point3 p = k < columns_ ? Waypoint(x, k) : goal_;
-    fitness += (p - prev).norm() + p.z();
+    fitness += TerrainSegmentCost(prev, p, terrain_.cell_size());
     violation += SegmentViolation(prev, p);
     prev = p;
   }
@@ -97,7 +109,7 @@ void TerrainObjective::SampleAroundStraightPath(double band, Rng& rng, Eigen::Ve
     const double t = (ColumnX(k) - start_.x()) / (goal_.x() - start_.x());
     const double y = start_.y() + t * (goal_.y() - start_.y()) + rng.Uniform(-band, band);
     x[2 * k] = std::clamp(y, lower_[2 * k], upper_[2 * k]);
-    const double ground = terrain_.GroundAt(ColumnX(k), x[2 * k]);
+    const double ground = terrain_.GroundAt(Point2(ColumnX(k), x[2 * k]));
     const double low = std::isnan(ground) ? terrain_.min_height() : ground + clearance_;
     x[2 * k + 1] = std::min(low + rng.Uniform(0.0, band), terrain_.ceiling());
   }

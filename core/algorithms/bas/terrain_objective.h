@@ -8,13 +8,15 @@
 
 namespace swarmplan {
 
-// The 3D path model of seed 000 on a Terrain: one waypoint per column strictly between the
-// start's and the goal's column, decision vector (Y1, Z1, Y2, Z2, ...) with Y in [0, depth-1]
-// and Z in [lowest ground, ceiling]. Fitness (eq 3) f = sum over consecutive points of
-// (segment length + Z of the later point), in grid units, plus `penalty` times the violation
-// (ours): along every segment, sampled every quarter cell, the depth below ground + clearance,
-// the height above the ceiling, and a full relief for a point over a cell without data.
-// Feasible means no violation.
+// The 3D path model of seed 000 on a Terrain, in world units: one waypoint per column (at the
+// x of its cell centres) strictly between the start's and the goal's column, decision vector
+// (Y1, Z1, Y2, Z2, ...) with Y between the first and the last row's centre and Z in [lowest
+// ground, ceiling]. Fitness (eq 3) f = TerrainPathCost (sum over consecutive points of segment
+// length + Z of the later point per cell of x-advance, see terrain_path_cost.h) plus `penalty`
+// times the violation (ours): along every segment, sampled every quarter cell, the depth below
+// ground + clearance, the height above the ceiling, and a full relief for a point over a cell
+// without data. Feasible means no violation (the planner's result is then checked exactly by the
+// terrain's collision checker).
 class TerrainObjective final : public PathObjective {
  public:
   // INVALID_ARGUMENT unless the map is a terrain and start and goal are two or more columns
@@ -36,8 +38,8 @@ class TerrainObjective final : public PathObjective {
 
   const Terrain& terrain() const { return terrain_; }
   int columns() const { return columns_; }
-  // The x of interior waypoint k (0-based).
-  double ColumnX(int k) const { return first_column_ + k * direction_; }
+  // The world x of interior waypoint k (0-based).
+  double ColumnX(int k) const { return terrain_.CellCentre(first_column_ + k * direction_, 0).x(); }
   const Point3& start() const { return start_; }
   const Point3& goal() const { return goal_; }
   double clearance() const { return clearance_; }
