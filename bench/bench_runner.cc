@@ -167,7 +167,7 @@ void AddOptima(const Registry& registry, absl::Duration budget, double clearance
     problem.clearance = clearance;
     const Optimum optimum = ComputeOptimum(registry, problem, budget);
     if (optimum.known) {
-      p.optimal = optimum.length;
+      p.optimal = optimum.cost;
       continue;
     }
     p.optimal.reset();
@@ -221,7 +221,12 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   if (result->found && has_path && !metrics.collision_free) {
     *note = "the planner reported a path that is not collision-free (counted as a failure)";
   }
-  record.ratio = LengthRatio(record.success, record.length, record.optimal);
+  // The optimum's cost is its length on 2D maps and the terrain objective on terrain.
+  record.ratio =
+      LengthRatio(record.success,
+                  has_path ? std::optional<double>(PlanCost(*problem.map, result->smoothed_path))
+                           : std::nullopt,
+                  record.optimal);
   record.iterations = result->iterations;
   record.evaluations = result->evaluations;
   record.wall_seconds = absl::ToDoubleSeconds(result->wall_time);

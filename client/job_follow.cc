@@ -148,12 +148,15 @@ void PrintJob(const v1::Job& job) {
     rows.push_back({"found", result.found() ? "yes" : "no"});
     rows.push_back({"fitness", FormatNumber(result.fitness())});
     if (result.has_optimum_length()) {
-      rows.push_back({"exact optimum", absl::StrCat(FormatNumber(result.optimum_length()), " (",
-                                                    result.optimum_planner(), ")")});
+      std::string optimum = absl::StrCat("length ", FormatNumber(result.optimum_length()));
+      if (result.has_optimum_cost() && result.optimum_cost() != result.optimum_length()) {
+        absl::StrAppend(&optimum, ", cost ", FormatNumber(result.optimum_cost()));
+      }
+      rows.push_back({"exact optimum", absl::StrCat(optimum, " (", result.optimum_planner(), ")")});
       if (result.has_optimality_ratio()) {
         rows.push_back(
             {"optimality ratio", absl::StrCat(absl::StrFormat("%.4f", result.optimality_ratio()),
-                                              " (path length / exact optimum)")});
+                                              " (path over the exact optimum)")});
       }
     } else if (!result.optimum_note().empty()) {
       rows.push_back({"exact optimum", absl::StrCat("unknown: ", result.optimum_note())});

@@ -2,6 +2,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "core/operators/terrain_path_cost.h"
 #include "core/path_metrics.h"
 
 namespace swarmplan {
@@ -45,6 +46,7 @@ Optimum ComputeOptimum(const Registry& registry, const Problem& problem, absl::D
   } else if (result->found) {
     optimum.known = true;
     optimum.length = PathLength(result->path);
+    optimum.cost = PlanCost(*problem.map, result->path);
   } else if (result->stop_reason == StopReason::kDeadline) {
     optimum.reason = absl::StrCat("not found within the budget of ", absl::FormatDuration(budget));
   } else if (result->stop_reason == StopReason::kCancelled) {
@@ -55,9 +57,14 @@ Optimum ComputeOptimum(const Registry& registry, const Problem& problem, absl::D
   return optimum;
 }
 
-double OptimalityRatio(double length, const Optimum& optimum) {
-  if (!optimum.known || optimum.length <= 0.0) return 0.0;
-  return length / optimum.length;
+double PlanCost(const Map& map, const Path& path) {
+  if (const Terrain* terrain = map.terrain()) return TerrainPathCost(path, terrain->cell_size());
+  return PathLength(path);
+}
+
+double OptimalityRatio(double cost, const Optimum& optimum) {
+  if (!optimum.known || optimum.cost <= 0.0) return 0.0;
+  return cost / optimum.cost;
 }
 
 }  // namespace swarmplan

@@ -9,11 +9,12 @@
 
 namespace swarmplan {
 
-// The yardstick of a plan: the length of the exact optimum for the problem, found by the exact
-// planner of the map's kind (ExactPlannerFor), or the reason it is not known.
+// The yardstick of a plan: the exact optimum for the problem, found by the exact planner of the
+// map's kind (ExactPlannerFor), or the reason it is not known.
 struct Optimum {
   bool known = false;
-  double length = 0.0;  // world units; valid when known
+  double length = 0.0;  // of the exact path, world units; valid when known
+  double cost = 0.0;    // PlanCost of the exact path: the length on 2D maps
   std::string planner;  // the exact planner that was asked
   std::string reason;   // when not known, for a person: "no path", "over the budget of 2s", ...
 };
@@ -29,7 +30,11 @@ const char* ExactPlannerFor(MapKind kind);
 Optimum ComputeOptimum(const Registry& registry, const Problem& problem, absl::Duration budget,
                        const StopToken& stop = StopToken());
 
-// length / optimum.length, or 0 when the optimum is not known or is 0.
-double OptimalityRatio(double length, const Optimum& optimum);
+// What the exact planner of the map's kind minimises: the length on 2D maps, the terrain
+// objective of the terrain planners (TerrainPathCost, world units) on terrain.
+double PlanCost(const Map& map, const Path& path);
+
+// cost / optimum.cost, or 0 when the optimum is not known or costs 0.
+double OptimalityRatio(double cost, const Optimum& optimum);
 
 }  // namespace swarmplan

@@ -136,11 +136,13 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
   return result;
 }
 
-void SetOptimum(Optimum optimum, PlanResult& result) {
+void SetOptimum(const Map& map, Optimum optimum, PlanResult& result) {
   result.optimum = std::move(optimum);
-  const PathMetrics& final_path =
-      result.smoothing_collision_free ? result.smoothed_metrics : result.raw_metrics;
-  result.optimality_ratio = result.found ? OptimalityRatio(final_path.length, result.optimum) : 0.0;
+  const Path& final_path = result.smoothing_collision_free && !result.smoothed_path.empty()
+                               ? result.smoothed_path
+                               : result.raw_path;
+  result.optimality_ratio =
+      result.found ? OptimalityRatio(PlanCost(map, final_path), result.optimum) : 0.0;
 }
 
 }  // namespace swarmplan

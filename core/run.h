@@ -40,9 +40,10 @@ struct PlanResult {
   uint64_t seed = 0;
   ParamValues resolved_params;
   std::vector<IterationStats> convergence;
-  // The exact optimum of the problem and the final path's length over it (the smoothed path,
-  // or the raw one when smoothing lost the clearance; 0 when the optimum is not known or no
-  // path was found). RunPlan leaves them empty: see SetOptimum.
+  // The exact optimum of the problem and the final path's cost over the optimum's (PlanCost:
+  // the length on 2D maps; of the smoothed path, or of the raw one when smoothing lost the
+  // clearance; 0 when the optimum is not known or no path was found). RunPlan leaves them
+  // empty: see SetOptimum.
   Optimum optimum;
   double optimality_ratio = 0.0;
 };
@@ -57,7 +58,7 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
                                    const StopToken& stop, Observer& observer);
 
 // Records the problem's exact optimum in a result and measures the final path against it.
-void SetOptimum(Optimum optimum, PlanResult& result);
+void SetOptimum(const Map& map, Optimum optimum, PlanResult& result);
 
 // The checks RunPlan makes before it plans, for callers that want to reject a request early.
 absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& request);

@@ -90,7 +90,8 @@ void JobManager::Execute(const JobPtr& job) {
   absl::StatusOr<PlanResult> result = RunPlan(registry_, job->plan, job->stop, publisher);
   publisher.Flush();
   if (result.ok() && !job->stop.cancelled()) {
-    SetOptimum(optima_.Get(job->record.request().map_id(), job->plan.problem), *result);
+    SetOptimum(*job->plan.problem.map,
+               optima_.Get(job->record.request().map_id(), job->plan.problem), *result);
   }
 
   {

@@ -150,6 +150,7 @@ v1::PlanResult ToProto(const PlanResult& r) {
   out.set_optimum_planner(r.optimum.planner);
   if (r.optimum.known) {
     out.set_optimum_length(r.optimum.length);
+    out.set_optimum_cost(r.optimum.cost);
     if (r.found) out.set_optimality_ratio(r.optimality_ratio);
   } else {
     out.set_optimum_note(r.optimum.reason);

@@ -129,4 +129,38 @@ inline double WorldPathClearance(const ShapeWorld& world, const Path& path) {
   return clearance;
 }
 
+// The smallest height of the path above the terrain's ground, from the terrain's own samples
+// (bilinear between cell centres, computed here) every 1/50 of a cell along each segment; -1
+// when a point leaves the terrain, flies over a cell without data or above the ceiling.
+inline double TerrainPathClearance(const Terrain& terrain, const Path& path) {
+  auto ground = [&](const Point2& world) {
+    const Point2 c = terrain.ToCell(world);
+    if (c.x() < -1e-9 || c.y() < -1e-9 || c.x() > terrain.width() - 1 + 1e-9 ||
+        c.y() > terrain.depth() - 1 + 1e-9) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    const int x0 = std::clamp(static_cast<int>(std::floor(c.x())), 0, terrain.width() - 2);
+    const int y0 = std::clamp(static_cast<int>(std::floor(c.y())), 0, terrain.depth() - 2);
+    const double fx = c.x() - x0, fy = c.y() - y0;
+    return (1 - fx) * (1 - fy) * terrain.HeightAt(x0, y0) +
+           fx * (1 - fy) * terrain.HeightAt(x0 + 1, y0) +
+           (1 - fx) * fy * terrain.HeightAt(x0, y0 + 1) +
+           fx * fy * terrain.HeightAt(x0 + 1, y0 + 1);
+  };
+  double clearance = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    const Point3& a = path[i];
+    const Point3& b = path[i + 1];
+    const double cells = (b - a).head<2>().norm() / terrain.cell_size();
+    const int steps = std::max(1, static_cast<int>(std::ceil(cells * 50)));
+    for (int k = 0; k <= steps; ++k) {
+      const Point3 p = a + (b - a) * (static_cast<double>(k) / steps);
+      const double g = ground(p.head<2>());
+      if (std::isnan(g) || p.z() > terrain.ceiling() + 1e-9) return -1.0;
+      clearance = std::min(clearance, p.z() - g);
+    }
+  }
+  return clearance;
+}
+
 }  // namespace swarmplan::contract

@@ -77,14 +77,15 @@ TEST(OptimumTest, RatioMeasuresTheFinalPath) {
   NullObserver observer;
   absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, {}, observer);
   ASSERT_TRUE(result.ok()) << result.status();
-  SetOptimum(ComputeOptimum(DefaultRegistry(), request.problem, absl::Seconds(10)), *result);
+  const Map& map = *request.problem.map;
+  SetOptimum(map, ComputeOptimum(DefaultRegistry(), request.problem, absl::Seconds(10)), *result);
   EXPECT_NEAR(result->optimality_ratio, 1.0, 1e-12);
 
   Optimum half = result->optimum;
-  half.length *= 0.5;
-  SetOptimum(half, *result);
+  half.cost *= 0.5;
+  SetOptimum(map, half, *result);
   EXPECT_NEAR(result->optimality_ratio, 2.0, 1e-12);
-  SetOptimum(Optimum{}, *result);
+  SetOptimum(map, Optimum{}, *result);
   EXPECT_EQ(result->optimality_ratio, 0.0);
 }
 
