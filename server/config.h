@@ -27,6 +27,9 @@ struct ServerConfig {
   int max_iterations = 1000000;
   absl::Duration max_job_time = absl::Minutes(10);
   int max_watchers_per_job = 16;
+  // A ListMaps/ListJobs page stops before it would exceed this many bytes (or half of
+  // max_message_bytes, when smaller).
+  int64_t max_page_bytes = 4 * 1024 * 1024;
   // Security: bearer token from a file (empty: off); TLS from certificate and key files.
   std::string token_file;
   std::string tls_cert_file;

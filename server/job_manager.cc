@@ -155,6 +155,7 @@ void JobManager::Add(const JobPtr& job) {
 
 absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& request,
                                                          bool detached) {
+  if (absl::Status s = CheckRequestBounds(request); !s.ok()) return s;
   absl::MutexLock submit_lock(&submit_mu_);
   if (!request.client_request_id().empty()) {
     absl::MutexLock lock(&mu_);
@@ -242,7 +243,7 @@ v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
 }
 
 absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState>& states,
-                                                  int page_size,
+                                                  int page_size, size_t max_bytes,
                                                   const std::string& page_token) const {
   const std::string scope = ListScope(states);
   std::optional<PageKey> before;
@@ -260,6 +261,7 @@ absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState
     }
   }
   Page page;
+  size_t bytes = 0;
   PageKey last;
   for (const JobPtr& job : candidates) {
     v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
@@ -267,10 +269,12 @@ absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState
         std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
       continue;
     }
-    if (static_cast<int>(page.jobs.size()) == page_size) {
+    if (static_cast<int>(page.jobs.size()) == page_size ||
+        !FitsPage(bytes, snapshot.ByteSizeLong(), max_bytes)) {
       page.next_page_token = EncodePageToken(last, scope);
       break;
     }
+    bytes += snapshot.ByteSizeLong();
     last = PageKey{absl::ToUnixMicros(FromProto(snapshot.created_at())), snapshot.id()};
     page.jobs.push_back(std::move(snapshot));
   }

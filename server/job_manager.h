@@ -48,10 +48,11 @@ class JobManager {
     std::vector<v1::Job> jobs;
     std::string next_page_token;  // empty on the last page
   };
-  // Newest first (by creation time, then id), continuing after `page_token`. INVALID_ARGUMENT
-  // naming page_token for a token List did not issue for these states.
+  // Newest first (by creation time, then id), continuing after `page_token`: at most
+  // `page_size` jobs and `max_bytes` serialized bytes (FitsPage). INVALID_ARGUMENT naming
+  // page_token for a token List did not issue for these states.
   absl::StatusOr<Page> List(const std::vector<v1::JobState>& states, int page_size,
-                            const std::string& page_token) const;
+                            size_t max_bytes, const std::string& page_token) const;
   absl::StatusOr<v1::Job> Cancel(const std::string& id);
 
   // A stream on `job` ended; `remaining` watchers are left. When the job's own Plan call ended
