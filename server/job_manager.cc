@@ -298,6 +298,30 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
   return Snapshot(**job, /*with_result=*/true);
 }
 
+absl::Status JobManager::DeleteMap(const std::string& id) {
+  // Submit resolves and queues under submit_mu_: no job can take the map meanwhile.
+  absl::MutexLock submit_lock(&submit_mu_);
+  std::vector<std::string> holding;
+  {
+    absl::MutexLock lock(&mu_);
+    for (const auto& [job_id, job] : jobs_) {
+      absl::MutexLock job_lock(&job->mu);
+      if (!IsFinal(job->record.state()) && job->record.request().map_id() == id) {
+        holding.push_back(job_id);
+      }
+    }
+  }
+  if (!holding.empty()) {
+    constexpr size_t kNamed = 10;
+    const size_t named = std::min(holding.size(), kNamed);
+    return absl::FailedPreconditionError(absl::StrCat(
+        "id: map '", id, "' is used by ", holding.size(), " queued or running jobs (",
+        absl::StrJoin(holding.begin(), holding.begin() + named, ", "),
+        holding.size() > named ? ", ..." : "", "); cancel them or wait until they finish"));
+  }
+  return maps_.Delete(id);
+}
+
 void JobManager::WatcherLeft(const JobPtr& job, bool owner, int remaining) {
   bool cancel = false;
   {

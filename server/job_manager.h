@@ -55,6 +55,10 @@ class JobManager {
                             size_t max_bytes, const std::string& page_token) const;
   absl::StatusOr<v1::Job> Cancel(const std::string& id);
 
+  // Deletes a map no queued or running job refers to: FAILED_PRECONDITION naming those jobs
+  // otherwise, so that every job that may still run finds its map, also after a restart.
+  absl::Status DeleteMap(const std::string& id);
+
   // A stream on `job` ended; `remaining` watchers are left. When the job's own Plan call ended
   // (`owner`) before the job finished, nobody watches and the job is not detached, it is
   // cancelled.

@@ -68,7 +68,7 @@ grpc::ServerUnaryReactor* MapServiceImpl::DeleteMap(grpc::CallbackServerContext*
                                                     const v1::DeleteMapRequest* request,
                                                     v1::DeleteMapResponse*) {
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
-  absl::Status status = maps_.Delete(request->id());
+  absl::Status status = jobs_.DeleteMap(request->id());
   metrics_.SetMapsStored(maps_.size());
   return FinishUnary(context, ToGrpcStatus(status));
 }

@@ -17,9 +17,9 @@ namespace swarmplan::server {
 
 class MapServiceImpl final : public v1::MapService::CallbackService {
  public:
-  MapServiceImpl(MapCatalog& maps, Metrics& metrics, const ServerConfig& config,
+  MapServiceImpl(MapCatalog& maps, JobManager& jobs, Metrics& metrics, const ServerConfig& config,
                  const Authenticator& auth)
-      : maps_(maps), metrics_(metrics), config_(config), auth_(auth) {}
+      : maps_(maps), jobs_(jobs), metrics_(metrics), config_(config), auth_(auth) {}
 
   grpc::ServerUnaryReactor* UploadMap(grpc::CallbackServerContext* context,
                                       const v1::UploadMapRequest* request,
@@ -36,6 +36,7 @@ class MapServiceImpl final : public v1::MapService::CallbackService {
 
  private:
   MapCatalog& maps_;
+  JobManager& jobs_;
   Metrics& metrics_;
   const ServerConfig& config_;
   const Authenticator& auth_;

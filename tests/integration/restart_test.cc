@@ -72,6 +72,42 @@ TEST(RestartTest, MapsAndJobsSurviveARestartAndUnfinishedJobsRunAgainWithTheirSe
   EXPECT_EQ(server.WaitUntilFinal(plan_id).state(), v1::JOB_STATE_SUCCEEDED);
 }
 
+grpc::Status DeleteMap(TestServer& server, const std::string& id) {
+  v1::DeleteMapRequest request;
+  request.set_id(id);
+  v1::DeleteMapResponse response;
+  grpc::ClientContext context;
+  return server.maps().DeleteMap(&context, request, &response);
+}
+
+TEST(RestartTest, AMapWithQueuedOrRunningJobsCannotBeDeletedBeforeOrAfterARestart) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.shutdown_grace = absl::Milliseconds(50);
+  std::string map_id, running_id, queued_id;
+  {
+    TestServer server(dir.path(), config);
+    map_id = server.UploadGrid("grid", 6, 4);
+    running_id = server.SubmitOk(TestServer::SlowRequest(map_id, 100, 10)).id();
+    server.WaitForState(running_id, v1::JOB_STATE_RUNNING);
+    queued_id = server.SubmitOk(TestServer::SlowRequest(map_id, 2, 0)).id();
+    const grpc::Status refused = DeleteMap(server, map_id);
+    EXPECT_EQ(refused.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+    EXPECT_NE(refused.error_message().find(running_id), std::string::npos)
+        << refused.error_message();
+    EXPECT_NE(refused.error_message().find(queued_id), std::string::npos)
+        << refused.error_message();
+    server.server().Shutdown();  // both jobs are stored as queued
+  }
+  TestServer server(dir.path(), config);
+  EXPECT_EQ(DeleteMap(server, map_id).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(server.WaitUntilFinal(running_id).state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(server.WaitUntilFinal(queued_id).state(), v1::JOB_STATE_SUCCEEDED);
+  // Finished jobs do not hold their map.
+  EXPECT_TRUE(DeleteMap(server, map_id).ok());
+  EXPECT_EQ(server.GetJob(running_id).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
 TEST(RestartTest, FinishedJobsOlderThanTheRetentionPeriodAreDropped) {
   TempDir dir;
   server::ServerConfig config = TestServer::DefaultConfig();
