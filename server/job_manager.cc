@@ -468,6 +468,20 @@ void JobManager::Shutdown(absl::Duration grace) {
     queue_->WaitIdle(absl::InfiniteDuration());
   }
   queue_->Stop();
+  std::vector<JobPtr> all;
+  {
+    absl::MutexLock lock(&mu_);
+    for (const auto& [id, job] : jobs_) all.push_back(job);
+  }
+  for (const JobPtr& job : all) {
+    absl::MutexLock lock(&job->mu);
+    if (IsFinal(job->record.state())) continue;
+    v1::JobEvent requeued;
+    requeued.mutable_requeued()->set_reason(
+        absl::StrCat("the server is shutting down; job ", job->id,
+                     " is queued again and runs, with its seed, when the server is back"));
+    job->events.Publish(std::move(requeued));
+  }
 }
 
 }  // namespace swarmplan::server

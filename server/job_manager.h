@@ -65,7 +65,8 @@ class JobManager {
   void WatcherLeft(const JobPtr& job, bool owner, int remaining);
 
   // Refuses new jobs, lets running jobs finish within `grace`, then stops the rest and records
-  // them as queued so the next start runs them again.
+  // them as queued so the next start runs them again; the streams of every unfinished job get
+  // a requeued event.
   void Shutdown(absl::Duration grace);
 
   int queue_depth() const { return queue_->depth(); }
