@@ -30,6 +30,9 @@ struct ServerConfig {
   // Wall time a worker spends on a job's exact optimum (PlanResult.optimum_length) after the
   // plan; 0 disables it. Optima are cached per map, start, goal and clearance.
   absl::Duration optimum_budget = absl::Seconds(2);
+  // A ListMaps/ListJobs page stops before it would exceed this many bytes (or half of
+  // max_message_bytes, when smaller).
+  int64_t max_page_bytes = 4 * 1024 * 1024;
   // Security: bearer token from a file (empty: off); TLS from certificate and key files.
   std::string token_file;
   std::string tls_cert_file;

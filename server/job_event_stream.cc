@@ -74,11 +74,14 @@ class JobEventStream final : public grpc::ServerWriteReactor<v1::JobEvent> {
         finish = grpc::Status(grpc::StatusCode::CANCELLED, "the client went away");
       } else if (sent_final_) {
         finish_called_ = true;
+        if (current_->has_requeued()) {
+          finish = grpc::Status(grpc::StatusCode::UNAVAILABLE, current_->requeued().reason());
+        }
       } else {
         current_ = job_->events.Next(cursor_);
         if (current_ == nullptr) return;
         cursor_ = current_->sequence();
-        sent_final_ = current_->has_finished();
+        sent_final_ = IsLastEvent(*current_);
         writing_ = true;
         write = current_.get();
       }

@@ -8,6 +8,8 @@
 
 namespace swarmplan::server {
 
+bool IsLastEvent(const v1::JobEvent& event) { return event.has_finished() || event.has_requeued(); }
+
 void EventDoorbell::Ring() {
   absl::MutexLock lock(&mu_);
   if (ring_) ring_();
@@ -30,7 +32,7 @@ void JobEvents::Publish(v1::JobEvent event) {
     if (ptr->has_progress()) {
       latest_progress_ = std::move(ptr);
     } else {
-      finished_ = ptr->has_finished();
+      finished_ = IsLastEvent(*ptr);
       milestones_.push_back(std::move(ptr));
     }
     watchers = watchers_;

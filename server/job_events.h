@@ -13,6 +13,9 @@ namespace swarmplan::server {
 
 using EventPtr = std::shared_ptr<const v1::JobEvent>;
 
+// finished, or requeued at a shutdown: nothing follows it in this server process.
+bool IsLastEvent(const v1::JobEvent& event);
+
 // A watcher's doorbell: the buffer rings it when events arrive. Detach() guarantees that the
 // callback is not running and will not run again.
 class EventDoorbell {
@@ -27,14 +30,14 @@ class EventDoorbell {
 };
 
 // The events of one job. Publishing never blocks on a watcher: milestones (accepted, started,
-// finished) are all kept; of the progress events only the latest is kept, so a slow watcher
-// skips to the newest progress, and never misses a milestone. Thread-safe.
+// finished or requeued) are all kept; of the progress events only the latest is kept, so a slow
+// watcher skips to the newest progress, and never misses a milestone. Thread-safe.
 class JobEvents {
  public:
   explicit JobEvents(std::string job_id) : job_id_(std::move(job_id)) {}
 
   // Stamps the event with the job id, the next sequence number and the time, then rings every
-  // watcher. Nothing is published after a finished event.
+  // watcher. Nothing is published after a finished or requeued event (IsLastEvent).
   void Publish(v1::JobEvent event);
 
   // The first event after sequence `after` that a watcher should see, or nullptr.

@@ -165,6 +165,7 @@ void JobManager::Add(const JobPtr& job) {
 
 absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& request,
                                                          bool detached) {
+  if (absl::Status s = CheckRequestBounds(request); !s.ok()) return s;
   absl::MutexLock submit_lock(&submit_mu_);
   if (!request.client_request_id().empty()) {
     absl::MutexLock lock(&mu_);
@@ -252,7 +253,7 @@ v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
 }
 
 absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState>& states,
-                                                  int page_size,
+                                                  int page_size, size_t max_bytes,
                                                   const std::string& page_token) const {
   const std::string scope = ListScope(states);
   std::optional<PageKey> before;
@@ -270,6 +271,7 @@ absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState
     }
   }
   Page page;
+  size_t bytes = 0;
   PageKey last;
   for (const JobPtr& job : candidates) {
     v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
@@ -277,10 +279,12 @@ absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState
         std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
       continue;
     }
-    if (static_cast<int>(page.jobs.size()) == page_size) {
+    if (static_cast<int>(page.jobs.size()) == page_size ||
+        !FitsPage(bytes, snapshot.ByteSizeLong(), max_bytes)) {
       page.next_page_token = EncodePageToken(last, scope);
       break;
     }
+    bytes += snapshot.ByteSizeLong();
     last = PageKey{absl::ToUnixMicros(FromProto(snapshot.created_at())), snapshot.id()};
     page.jobs.push_back(std::move(snapshot));
   }
@@ -302,6 +306,30 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
     }
   }
   return Snapshot(**job, /*with_result=*/true);
+}
+
+absl::Status JobManager::DeleteMap(const std::string& id) {
+  // Submit resolves and queues under submit_mu_: no job can take the map meanwhile.
+  absl::MutexLock submit_lock(&submit_mu_);
+  std::vector<std::string> holding;
+  {
+    absl::MutexLock lock(&mu_);
+    for (const auto& [job_id, job] : jobs_) {
+      absl::MutexLock job_lock(&job->mu);
+      if (!IsFinal(job->record.state()) && job->record.request().map_id() == id) {
+        holding.push_back(job_id);
+      }
+    }
+  }
+  if (!holding.empty()) {
+    constexpr size_t kNamed = 10;
+    const size_t named = std::min(holding.size(), kNamed);
+    return absl::FailedPreconditionError(absl::StrCat(
+        "id: map '", id, "' is used by ", holding.size(), " queued or running jobs (",
+        absl::StrJoin(holding.begin(), holding.begin() + named, ", "),
+        holding.size() > named ? ", ..." : "", "); cancel them or wait until they finish"));
+  }
+  return maps_.Delete(id);
 }
 
 void JobManager::WatcherLeft(const JobPtr& job, bool owner, int remaining) {
@@ -450,6 +478,20 @@ void JobManager::Shutdown(absl::Duration grace) {
     queue_->WaitIdle(absl::InfiniteDuration());
   }
   queue_->Stop();
+  std::vector<JobPtr> all;
+  {
+    absl::MutexLock lock(&mu_);
+    for (const auto& [id, job] : jobs_) all.push_back(job);
+  }
+  for (const JobPtr& job : all) {
+    absl::MutexLock lock(&job->mu);
+    if (IsFinal(job->record.state())) continue;
+    v1::JobEvent requeued;
+    requeued.mutable_requeued()->set_reason(
+        absl::StrCat("the server is shutting down; job ", job->id,
+                     " is queued again and runs, with its seed, when the server is back"));
+    job->events.Publish(std::move(requeued));
+  }
 }
 
 }  // namespace swarmplan::server

@@ -49,11 +49,16 @@ class JobManager {
     std::vector<v1::Job> jobs;
     std::string next_page_token;  // empty on the last page
   };
-  // Newest first (by creation time, then id), continuing after `page_token`. INVALID_ARGUMENT
-  // naming page_token for a token List did not issue for these states.
+  // Newest first (by creation time, then id), continuing after `page_token`: at most
+  // `page_size` jobs and `max_bytes` serialized bytes (FitsPage). INVALID_ARGUMENT naming
+  // page_token for a token List did not issue for these states.
   absl::StatusOr<Page> List(const std::vector<v1::JobState>& states, int page_size,
-                            const std::string& page_token) const;
+                            size_t max_bytes, const std::string& page_token) const;
   absl::StatusOr<v1::Job> Cancel(const std::string& id);
+
+  // Deletes a map no queued or running job refers to: FAILED_PRECONDITION naming those jobs
+  // otherwise, so that every job that may still run finds its map, also after a restart.
+  absl::Status DeleteMap(const std::string& id);
 
   // A stream on `job` ended; `remaining` watchers are left. When the job's own Plan call ended
   // (`owner`) before the job finished, nobody watches and the job is not detached, it is
@@ -61,7 +66,8 @@ class JobManager {
   void WatcherLeft(const JobPtr& job, bool owner, int remaining);
 
   // Refuses new jobs, lets running jobs finish within `grace`, then stops the rest and records
-  // them as queued so the next start runs them again.
+  // them as queued so the next start runs them again; the streams of every unfinished job get
+  // a requeued event.
   void Shutdown(absl::Duration grace);
 
   int queue_depth() const { return queue_->depth(); }

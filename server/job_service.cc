@@ -61,7 +61,8 @@ grpc::ServerUnaryReactor* JobServiceImpl::ListJobs(grpc::CallbackServerContext* 
   }
   std::vector<v1::JobState> states;
   for (int s : request->states()) states.push_back(static_cast<v1::JobState>(s));
-  absl::StatusOr<JobManager::Page> page = jobs_.List(states, *page_size, request->page_token());
+  absl::StatusOr<JobManager::Page> page =
+      jobs_.List(states, *page_size, PageByteBudget(config_), request->page_token());
   if (!page.ok()) return FinishUnary(context, ToGrpcStatus(page.status()));
   for (v1::Job& job : page->jobs) *response->add_jobs() = std::move(job);
   response->set_next_page_token(page->next_page_token);

@@ -9,6 +9,7 @@
 #include "server/ids.h"
 #include "server/map_source.h"
 #include "server/proto_convert.h"
+#include "server/request_validation.h"
 
 namespace swarmplan::server {
 namespace {
@@ -63,7 +64,7 @@ absl::StatusOr<std::vector<std::string>> MapCatalog::Load() {
 
 absl::StatusOr<MapCatalog::UploadResult> MapCatalog::Upload(const std::string& name,
                                                             const v1::MapSource& source) {
-  if (name.empty()) return absl::InvalidArgumentError("name: required");
+  if (absl::Status s = CheckMapName(name); !s.ok()) return s;
   StoredMap stored;
   source.SerializeToString(&stored.source);
   stored.content_hash = ContentHash(stored.source);
@@ -113,7 +114,7 @@ absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const
   return source;
 }
 
-absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size,
+absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size, size_t max_bytes,
                                                   const std::string& page_token) const {
   std::optional<PageKey> after;
   if (!page_token.empty()) {
@@ -128,7 +129,11 @@ absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size,
                           [](const PageKey& k, const auto& e) { return k < KeyOf(*e); });
   }
   Page page;
+  size_t bytes = 0;
   for (; it != entries_.end() && static_cast<int>(page.maps.size()) < page_size; ++it) {
+    const size_t item = (*it)->info.ByteSizeLong();
+    if (!FitsPage(bytes, item, max_bytes)) break;
+    bytes += item;
     page.maps.push_back((*it)->info);
   }
   if (it != entries_.end() && !page.maps.empty()) {

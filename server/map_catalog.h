@@ -47,9 +47,10 @@ class MapCatalog {
     std::vector<v1::MapInfo> maps;
     std::string next_page_token;  // empty on the last page
   };
-  // Oldest first (by creation time, then id), continuing after `page_token`. INVALID_ARGUMENT
-  // naming page_token for a token List did not issue.
-  absl::StatusOr<Page> List(int page_size, const std::string& page_token) const;
+  // Oldest first (by creation time, then id), continuing after `page_token`: at most `page_size`
+  // maps and `max_bytes` serialized bytes (FitsPage). INVALID_ARGUMENT naming page_token for a
+  // token List did not issue.
+  absl::StatusOr<Page> List(int page_size, size_t max_bytes, const std::string& page_token) const;
   absl::Status Delete(const std::string& id);
   int size() const;
 

@@ -10,6 +10,11 @@ absl::StatusOr<int> ResolvePageSize(int page_size) {
   return std::min(page_size, 1000);
 }
 
+size_t PageByteBudget(const ServerConfig& config) {
+  return static_cast<size_t>(
+      std::min<int64_t>(config.max_page_bytes, config.max_message_bytes / 2));
+}
+
 grpc::ServerUnaryReactor* FinishUnary(grpc::CallbackServerContext* context,
                                       const grpc::Status& status) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
@@ -51,7 +56,8 @@ grpc::ServerUnaryReactor* MapServiceImpl::ListMaps(grpc::CallbackServerContext* 
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
   absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
   if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
-  absl::StatusOr<MapCatalog::Page> page = maps_.List(*page_size, request->page_token());
+  absl::StatusOr<MapCatalog::Page> page =
+      maps_.List(*page_size, PageByteBudget(config_), request->page_token());
   if (!page.ok()) return FinishUnary(context, ToGrpcStatus(page.status()));
   for (v1::MapInfo& info : page->maps) *response->add_maps() = std::move(info);
   response->set_next_page_token(page->next_page_token);
@@ -62,7 +68,7 @@ grpc::ServerUnaryReactor* MapServiceImpl::DeleteMap(grpc::CallbackServerContext*
                                                     const v1::DeleteMapRequest* request,
                                                     v1::DeleteMapResponse*) {
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
-  absl::Status status = maps_.Delete(request->id());
+  absl::Status status = jobs_.DeleteMap(request->id());
   metrics_.SetMapsStored(maps_.size());
   return FinishUnary(context, ToGrpcStatus(status));
 }

@@ -28,6 +28,12 @@ absl::Status Invalid() {
 
 }  // namespace
 
+bool FitsPage(size_t page_bytes, size_t item_bytes, size_t budget) {
+  // A repeated message field spends a tag and a length prefix on each item.
+  constexpr size_t kItemFraming = 1 + 5;
+  return page_bytes == 0 || page_bytes + item_bytes + kItemFraming <= budget;
+}
+
 std::string EncodePageToken(const PageKey& key, const std::string& scope) {
   const std::string payload = absl::StrCat(kVersion, ":", key.created_us, ":", key.id);
   return absl::WebSafeBase64Escape(absl::StrCat(payload, ":", Check(scope, payload)));

@@ -23,6 +23,10 @@ struct PageKey {
   }
 };
 
+// Whether an item of `item_bytes` (its serialized size) still fits on a page that holds
+// `page_bytes` so far under `budget`. The first item always fits, so every page makes progress.
+bool FitsPage(size_t page_bytes, size_t item_bytes, size_t budget);
+
 // An opaque, URL-safe next_page_token for `key`, bound to `scope` (the list and its filter), so
 // that a token is only accepted by the listing that issued it.
 std::string EncodePageToken(const PageKey& key, const std::string& scope);

@@ -104,7 +104,8 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
                                             impl->metrics);
   if (absl::Status s = impl->jobs->Recover(); !s.ok()) return s;
 
-  impl->map_service = std::make_unique<MapServiceImpl>(*impl->maps, impl->metrics, impl->auth);
+  impl->map_service = std::make_unique<MapServiceImpl>(*impl->maps, *impl->jobs, impl->metrics,
+                                                       impl->config, impl->auth);
   impl->algorithm_service = std::make_unique<AlgorithmServiceImpl>(registry, impl->auth);
   impl->job_service = std::make_unique<JobServiceImpl>(*impl->jobs, impl->config, impl->auth);
 

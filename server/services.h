@@ -17,8 +17,9 @@ namespace swarmplan::server {
 
 class MapServiceImpl final : public v1::MapService::CallbackService {
  public:
-  MapServiceImpl(MapCatalog& maps, Metrics& metrics, const Authenticator& auth)
-      : maps_(maps), metrics_(metrics), auth_(auth) {}
+  MapServiceImpl(MapCatalog& maps, JobManager& jobs, Metrics& metrics, const ServerConfig& config,
+                 const Authenticator& auth)
+      : maps_(maps), jobs_(jobs), metrics_(metrics), config_(config), auth_(auth) {}
 
   grpc::ServerUnaryReactor* UploadMap(grpc::CallbackServerContext* context,
                                       const v1::UploadMapRequest* request,
@@ -35,7 +36,9 @@ class MapServiceImpl final : public v1::MapService::CallbackService {
 
  private:
   MapCatalog& maps_;
+  JobManager& jobs_;
   Metrics& metrics_;
+  const ServerConfig& config_;
   const Authenticator& auth_;
 };
 
@@ -85,6 +88,8 @@ class JobServiceImpl final : public v1::JobService::CallbackService {
 
 // Page size as the API defines it: 0 -> 100, capped at 1000. INVALID_ARGUMENT when negative.
 absl::StatusOr<int> ResolvePageSize(int page_size);
+// The bytes a listing page may hold: --max-page-bytes, or half the message limit when smaller.
+size_t PageByteBudget(const ServerConfig& config);
 
 // Finishes a unary call with `status`.
 grpc::ServerUnaryReactor* FinishUnary(grpc::CallbackServerContext* context,

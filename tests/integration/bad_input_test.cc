@@ -176,6 +176,57 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
   ExpectHealthyAndNothingLost();
 }
 
+TEST_F(BadInputTest, SizesAndCountsOfRequestFieldsAreBoundedAndTheMessageNamesTheBound) {
+  struct BoundCase {
+    const char* name;
+    std::function<void(v1::PlanRequest&)> mutate;
+    const char* field;
+    const char* bound;
+  };
+  const std::vector<BoundCase> cases = {
+      {"too many labels",
+       [](auto& r) {
+         for (int i = 0; i < 65; ++i) (*r.mutable_labels())["k" + std::to_string(i)] = "v";
+       },
+       "labels", "64"},
+      {"label key too long", [](auto& r) { (*r.mutable_labels())[std::string(64, 'k')] = "v"; },
+       "labels", "63"},
+      {"empty label key", [](auto& r) { (*r.mutable_labels())[""] = "v"; }, "labels", "1"},
+      {"label value too long",
+       [](auto& r) { (*r.mutable_labels())["robot"] = std::string(257, 'v'); }, "labels['robot']",
+       "256"},
+      {"client_request_id too long",
+       [](auto& r) { r.set_client_request_id(std::string(129, 'r')); }, "client_request_id", "128"},
+  };
+  for (const BoundCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    v1::PlanRequest request = TestServer::SlowRequest(grid_id_, 1, 0);
+    c.mutate(request);
+    v1::SubmitPlanResponse response;
+    grpc::ClientContext context;
+    grpc::Status status = server_.jobs().SubmitPlan(&context, request, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << status.error_message();
+    EXPECT_NE(status.error_message().find(c.field), std::string::npos) << status.error_message();
+    EXPECT_NE(status.error_message().find(c.bound), std::string::npos) << status.error_message();
+  }
+  v1::PlanRequest at_the_bounds = TestServer::SlowRequest(grid_id_, 1, 0);
+  for (int i = 0; i < 63; ++i) (*at_the_bounds.mutable_labels())["k" + std::to_string(i)] = "v";
+  (*at_the_bounds.mutable_labels())[std::string(63, 'k')] = std::string(256, 'v');
+  at_the_bounds.set_client_request_id(std::string(128, 'r'));
+  EXPECT_EQ(server_.WaitUntilFinal(server_.SubmitOk(at_the_bounds).id()).state(),
+            v1::JOB_STATE_SUCCEEDED);
+
+  v1::UploadMapRequest upload;
+  upload.set_name(std::string(257, 'n'));
+  SetFile(upload, "ascii", "a.txt", "..\n");
+  v1::UploadMapResponse uploaded;
+  grpc::ClientContext context;
+  grpc::Status status = server_.maps().UploadMap(&context, upload, &uploaded);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(status.error_message().find("name"), std::string::npos) << status.error_message();
+  EXPECT_NE(status.error_message().find("256"), std::string::npos) << status.error_message();
+}
+
 TEST_F(BadInputTest, ListJobsRefusesAStateFilterOutsideTheEnum) {
   for (int state : {99, -1, 0}) {
     SCOPED_TRACE(state);

@@ -182,6 +182,38 @@ TEST_F(JobsTest, ListJobsFiltersByStateAndPagesNewestFirst) {
   EXPECT_EQ(response.jobs(0).id(), cancelled_job.id());
 }
 
+TEST(JobsPagesTest, APageStopsBeforeItWouldExceedTheByteBudgetAndTheTokenContinues) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.max_page_bytes = 2048;
+  TestServer server(dir.path(), config);
+  const std::string map_id = server.UploadGrid("grid", 6, 4);
+  std::vector<std::string> ids;
+  for (int i = 0; i < 6; ++i) {
+    v1::PlanRequest request = TestServer::SlowRequest(map_id, 1, 0);
+    for (const char* key : {"a", "b", "c"})
+      (*request.mutable_labels())[key] = std::string(256, 'v');
+    ids.insert(ids.begin(), server.WaitUntilFinal(server.SubmitOk(request).id()).id());
+  }
+  std::vector<std::string> listed;
+  std::string token;
+  int pages = 0;
+  do {
+    v1::ListJobsRequest request;
+    request.set_page_token(token);
+    v1::ListJobsResponse response;
+    grpc::ClientContext context;
+    ASSERT_TRUE(server.jobs().ListJobs(&context, request, &response).ok());
+    EXPECT_LE(response.ByteSizeLong(), 2048u + response.next_page_token().size() + 8);
+    ASSERT_GT(response.jobs_size(), 0);
+    for (const v1::Job& j : response.jobs()) listed.push_back(j.id());
+    token = response.next_page_token();
+    ++pages;
+  } while (!token.empty() && pages < 20);
+  EXPECT_EQ(listed, ids);
+  EXPECT_GE(pages, 3);
+}
+
 TEST_F(JobsTest, LateWatcherOfAFinishedJobGetsTheFinishedEventOnly) {
   const v1::Job job =
       server_.WaitUntilFinal(server_.SubmitOk(TestServer::SlowRequest(map_id_, 2, 0)).id());

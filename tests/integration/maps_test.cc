@@ -121,6 +121,34 @@ TEST_F(MapsTest, ListMapsContinuesAfterThePagesLastMapWasDeleted) {
   EXPECT_TRUE(rest.next_page_token().empty());
 }
 
+TEST(MapsPagesTest, APageStopsBeforeItWouldExceedTheByteBudgetAndTheTokenContinues) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.max_page_bytes = 2048;
+  TestServer server(dir.path(), config);
+  std::vector<std::string> ids;
+  for (int i = 0; i < 12; ++i) {
+    ids.push_back(server.UploadGrid(std::string(200, static_cast<char>('a' + i)), 3, 3));
+  }
+  std::vector<std::string> listed;
+  std::string token;
+  int pages = 0;
+  do {
+    v1::ListMapsRequest request;  // page_size 0: up to 100 maps, but not 2048 bytes
+    request.set_page_token(token);
+    v1::ListMapsResponse response;
+    grpc::ClientContext context;
+    ASSERT_TRUE(server.maps().ListMaps(&context, request, &response).ok());
+    EXPECT_LE(response.ByteSizeLong(), 2048u + response.next_page_token().size() + 8);
+    ASSERT_GT(response.maps_size(), 0);
+    for (const v1::MapInfo& m : response.maps()) listed.push_back(m.id());
+    token = response.next_page_token();
+    ++pages;
+  } while (!token.empty() && pages < 20);
+  EXPECT_EQ(listed, ids);
+  EXPECT_GE(pages, 3);
+}
+
 TEST_F(MapsTest, DeleteMapRemovesItAndASecondDeleteIsNotFound) {
   const std::string id = server_.UploadGrid("gone", 3, 3);
   v1::DeleteMapRequest request;

@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <thread>
+
 #include "absl/time/clock.h"
 #include "tests/integration/test_server.h"
 
@@ -48,7 +50,11 @@ TEST(RestartTest, MapsAndJobsSurviveARestartAndUnfinishedJobsRunAgainWithTheirSe
     ASSERT_TRUE(plan->Read(&accepted));
     plan_id = accepted.job_id();
     server.server().Shutdown();  // the running job does not finish within the grace period
-    plan->Finish();
+    grpc::Status plan_status;
+    const std::vector<v1::JobEvent> rest = TestServer::ReadAll(*plan, &plan_status);
+    ASSERT_FALSE(rest.empty());
+    EXPECT_TRUE(rest.back().has_requeued());
+    EXPECT_EQ(plan_status.error_code(), grpc::StatusCode::UNAVAILABLE);
   }
   TestServer server(dir.path(), config);
   std::vector<v1::MapInfo> maps_after = ListAllMaps(server);
@@ -70,6 +76,79 @@ TEST(RestartTest, MapsAndJobsSurviveARestartAndUnfinishedJobsRunAgainWithTheirSe
   EXPECT_EQ(queued_rerun.state(), v1::JOB_STATE_SUCCEEDED);
   EXPECT_EQ(queued_rerun.result().seed(), queued_rerun.seed());
   EXPECT_EQ(server.WaitUntilFinal(plan_id).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
+grpc::Status DeleteMap(TestServer& server, const std::string& id) {
+  v1::DeleteMapRequest request;
+  request.set_id(id);
+  v1::DeleteMapResponse response;
+  grpc::ClientContext context;
+  return server.maps().DeleteMap(&context, request, &response);
+}
+
+TEST(RestartTest, AMapWithQueuedOrRunningJobsCannotBeDeletedBeforeOrAfterARestart) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.shutdown_grace = absl::Milliseconds(50);
+  std::string map_id, running_id, queued_id;
+  {
+    TestServer server(dir.path(), config);
+    map_id = server.UploadGrid("grid", 6, 4);
+    running_id = server.SubmitOk(TestServer::SlowRequest(map_id, 100, 10)).id();
+    server.WaitForState(running_id, v1::JOB_STATE_RUNNING);
+    queued_id = server.SubmitOk(TestServer::SlowRequest(map_id, 2, 0)).id();
+    const grpc::Status refused = DeleteMap(server, map_id);
+    EXPECT_EQ(refused.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+    EXPECT_NE(refused.error_message().find(running_id), std::string::npos)
+        << refused.error_message();
+    EXPECT_NE(refused.error_message().find(queued_id), std::string::npos)
+        << refused.error_message();
+    server.server().Shutdown();  // both jobs are stored as queued
+  }
+  TestServer server(dir.path(), config);
+  EXPECT_EQ(DeleteMap(server, map_id).error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(server.WaitUntilFinal(running_id).state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(server.WaitUntilFinal(queued_id).state(), v1::JOB_STATE_SUCCEEDED);
+  // Finished jobs do not hold their map.
+  EXPECT_TRUE(DeleteMap(server, map_id).ok());
+  EXPECT_EQ(server.GetJob(running_id).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
+TEST(RestartTest, AShutdownEndsTheStreamsOfUnfinishedJobsWithARequeuedEvent) {
+  TempDir dir;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.shutdown_grace = absl::Milliseconds(50);
+  std::string running_id, queued_id;
+  {
+    TestServer server(dir.path(), config);
+    const std::string map_id = server.UploadGrid("grid", 6, 4);
+    grpc::ClientContext running_context, queued_context;
+    auto running = server.jobs().Plan(&running_context, TestServer::SlowRequest(map_id, 200, 10));
+    v1::JobEvent event;
+    ASSERT_TRUE(running->Read(&event));  // accepted
+    running_id = event.job_id();
+    ASSERT_TRUE(running->Read(&event));
+    ASSERT_TRUE(event.has_started());
+    auto queued = server.jobs().Plan(&queued_context, TestServer::SlowRequest(map_id, 2, 0));
+    ASSERT_TRUE(queued->Read(&event));
+    ASSERT_TRUE(event.has_accepted());
+    queued_id = event.job_id();
+    // The running job outlasts the grace period.
+    std::thread stop([&server] { server.server().Shutdown(); });
+    for (auto* stream : {running.get(), queued.get()}) {
+      grpc::Status status;
+      const std::vector<v1::JobEvent> events = TestServer::ReadAll(*stream, &status);
+      ASSERT_FALSE(events.empty());
+      EXPECT_TRUE(events.back().has_requeued()) << events.back().ShortDebugString();
+      EXPECT_NE(events.back().requeued().reason().find("queued again"), std::string::npos);
+      EXPECT_EQ(status.error_code(), grpc::StatusCode::UNAVAILABLE) << status.error_message();
+      for (const v1::JobEvent& e : events) EXPECT_FALSE(e.has_finished());
+    }
+    stop.join();
+  }
+  TestServer server(dir.path(), config);
+  EXPECT_EQ(server.WaitUntilFinal(running_id).state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(server.WaitUntilFinal(queued_id).state(), v1::JOB_STATE_SUCCEEDED);
 }
 
 TEST(RestartTest, FinishedJobsOlderThanTheRetentionPeriodAreDropped) {
