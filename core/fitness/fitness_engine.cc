@@ -73,6 +73,7 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
   points_x_.resize(n, batch);
   points_y_.resize(n, batch);
   segment_.resize(n);
+  clearance_.resize(n);
 }
 
 void FitnessEngine::Interpolate(const Eigen::Ref<const Eigen::MatrixXd>& xs, int first, int count) {
@@ -135,45 +136,57 @@ Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double 
 }
 
 Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
-                                FleetTerms* terms) const {
+                                FleetTerms* terms) {
   const FleetObjective& f = *fleet_;
   const int n = static_cast<int>(points_x_.rows());
   const Point2 lo = proximity_.lower(), hi = proximity_.upper();
-  const double max_curvature = f.turning_radius > 0 ? 1.0 / f.turning_radius : 0.0;
-  double shortfall = 0.0, excess = 0.0, violation = 0.0;
-  bool feasible = true;
+  // Pass 1: the clearance at every point and the shortfalls, each point weighted by half of
+  // each segment beside it.
+  double shortfall = 0.0, violation = 0.0;
+  bool outside = false;
+  bool below = false;
   for (int i = 0; i < n; ++i) {
-    const double before = i > 0 ? segment_[i - 1] : 0.0;
-    const double after = i + 1 < n ? segment_[i] : 0.0;
-    const double ds = 0.5 * (before + after);
-    const double inside = std::min({x[i] - lo.x(), hi.x() - x[i], y[i] - lo.y(), hi.y() - y[i]});
-    const double d = field_->Bilinear(x[i], y[i]);
-    if (f.preferred_clearance > 0) shortfall += std::max(0.0, f.preferred_clearance - d) * ds;
-    const double below = std::max(0.0, hard_clearance_ - d) + std::max(0.0, -inside);
-    if (below > 0 || inside < 0) {
-      violation += below * ds;
-      feasible = false;
+    clearance_[i] = field_->Bilinear(x[i], y[i]);
+    below |= clearance_[i] < hard_clearance_;
+    outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
+  }
+  for (int i = 0; i < n; ++i) {
+    const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
+    shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;
+    violation += std::max(0.0, hard_clearance_ - clearance_[i]) * ds;
+  }
+  if (outside) {
+    for (int i = 0; i < n; ++i) {
+      const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
+      const double inside =
+          std::min(std::min(x[i] - lo.x(), hi.x() - x[i]), std::min(y[i] - lo.y(), hi.y() - y[i]));
+      violation += std::max(0.0, -inside) * ds;
     }
-    if (f.turning_radius > 0 && i > 0 && i + 1 < n) {
-      // Discrete curvature 2 tan(theta / 2) / mean segment, theta the turn at point i: exact on
-      // a circle sampled at equal chords, and growing without bound toward a reversal.
+  }
+  const bool feasible = !outside && !below;
+  // Pass 2: the discrete curvature 2 tan(theta / 2) / mean segment at each interior point,
+  // theta its turn: exact on a circle sampled at equal chords, unbounded toward a reversal.
+  double excess = 0.0;
+  if (f.turning_radius > 0) {
+    const double max_curvature = 1.0 / f.turning_radius;
+    for (int i = 1; i + 1 < n; ++i) {
+      const double before = segment_[i - 1], after = segment_[i];
       const double ux = x[i] - x[i - 1], uy = y[i] - y[i - 1];
       const double vx = x[i + 1] - x[i], vy = y[i + 1] - y[i];
       const double cross = std::abs(ux * vy - uy * vx);
-      const double dot = ux * vx + uy * vy;
-      const double denominator = (before * after + dot) * (before + after);
+      const double denominator = (before * after + ux * vx + uy * vy) * (before + after);
       double curvature = 0.0;
       if (denominator > 0) {
         curvature = 4.0 * cross / denominator;
       } else if (before * after > 0) {
         curvature = kReversalCurvature;
       }
-      excess += std::max(0.0, curvature - max_curvature) * ds;
+      excess += std::max(0.0, curvature - max_curvature) * 0.5 * (before + after);
     }
   }
   FleetTerms t;
   t.length = length;
-  t.clearance = f.clearance_weight * shortfall;
+  t.clearance = f.preferred_clearance > 0 ? f.clearance_weight * shortfall : 0.0;
   t.curvature = f.curvature_weight * excess;
   t.violation = f.violation_weight * violation;
   if (terms != nullptr) *terms = t;

@@ -62,7 +62,7 @@ class FitnessEngine {
   // Column j of the point buffers: segment lengths, then the objective.
   Evaluation EvaluatePath(int column, FleetTerms* terms);
   Evaluation PaperPenalty(const double* x, const double* y, double length);
-  Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms) const;
+  Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms);
 
   int waypoints_;
   double penalty_;
@@ -78,6 +78,7 @@ class FitnessEngine {
   std::shared_ptr<const DistanceField> owned_field_;  // built from a grid
   Eigen::MatrixXd points_x_, points_y_;               // (points) x (batch) buffers
   std::vector<double> segment_;                       // segment lengths of one path
+  std::vector<double> clearance_;                     // the field at its points (fleet objective)
 };
 
 }  // namespace swarmplan

@@ -17,6 +17,10 @@ DistanceField DistanceField::FromBlockedCells(int width, int height,
   field.cell_ = cell;
   field.inv_cell_ = 1.0 / cell;
   field.origin_ = origin;
+  field.last_x_ = std::max(0, width - 2);
+  field.last_y_ = std::max(0, height - 2);
+  field.step_x_ = width > 1 ? 1 : 0;
+  field.step_y_ = height > 1 ? width : 0;
   std::vector<uint8_t> free(blocked.size());
   for (size_t i = 0; i < blocked.size(); ++i) free[i] = blocked[i] ? 0 : 1;
   const std::vector<double> to_blocked = SquaredDistanceTransform(width, height, blocked);
@@ -37,20 +41,6 @@ DistanceField DistanceField::FromBlockedCells(int width, int height,
     }
   }
   return field;
-}
-
-double DistanceField::Bilinear(double x, double y) const {
-  const double gx = std::clamp((x - origin_.x()) * inv_cell_ - 0.5, 0.0, width_ - 1.0);
-  const double gy = std::clamp((y - origin_.y()) * inv_cell_ - 0.5, 0.0, height_ - 1.0);
-  const int ix = std::min(static_cast<int>(gx), std::max(0, width_ - 2));
-  const int iy = std::min(static_cast<int>(gy), std::max(0, height_ - 2));
-  const double tx = gx - ix, ty = gy - iy;
-  const int dx = width_ > 1 ? 1 : 0;
-  const size_t row = static_cast<size_t>(width_) * (height_ > 1 ? 1 : 0);
-  const float* v = values_.data() + static_cast<size_t>(iy) * width_ + ix;
-  const double bottom = v[0] + tx * (v[dx] - v[0]);
-  const double top = v[row] + tx * (v[row + dx] - v[row]);
-  return bottom + ty * (top - bottom);
 }
 
 }  // namespace swarmplan

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -40,10 +41,23 @@ class DistanceField {
   float CellValue(int x, int y) const { return values_[static_cast<size_t>(y) * width_ + x]; }
   const float* values() const { return values_.data(); }
   // Bilinear interpolation between the cell centres, clamped to the field: continuous in p.
-  double Bilinear(double x, double y) const;
+  double Bilinear(double x, double y) const {
+    const double gx = std::clamp((x - origin_.x()) * inv_cell_ - 0.5, 0.0, width_ - 1.0);
+    const double gy = std::clamp((y - origin_.y()) * inv_cell_ - 0.5, 0.0, height_ - 1.0);
+    const int ix = std::min(static_cast<int>(gx), last_x_);
+    const int iy = std::min(static_cast<int>(gy), last_y_);
+    const double tx = gx - ix, ty = gy - iy;
+    const float* v = values_.data() + static_cast<size_t>(iy) * width_ + ix;
+    const double bottom = v[0] + tx * (v[step_x_] - v[0]);
+    const double top = v[step_y_] + tx * (v[step_y_ + step_x_] - v[step_y_]);
+    return bottom + ty * (top - bottom);
+  }
 
  private:
   int width_ = 0, height_ = 0;
+  // The last cell a bilinear patch starts at, and the steps to the next column and row (0 on
+  // a field one cell wide or high).
+  int last_x_ = 0, last_y_ = 0, step_x_ = 0, step_y_ = 0;
   double cell_ = 1.0, inv_cell_ = 1.0;
   Point2 origin_ = Point2::Zero();
   std::vector<float> values_;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fitness/reference_objective.h"
 #include "core/geometry/primitives.h"
 #include "core/geometry/rasterize.h"
 #include "core/map/generate.h"
@@ -58,18 +59,6 @@ std::vector<MapCase> MapCases() {
   return cases;
 }
 
-// The reference fitness: the spline by WaypointPathBuilder, xi by the unscreened count.
-Evaluation ReferenceFitness(const Problem& problem, const WaypointFitnessOptions& options,
-                            WaypointPathBuilder& builder, ObstacleProximity& proximity,
-                            const Eigen::VectorXd& x) {
-  const Path& path = builder.Build(x);
-  double length = 0.0;
-  for (size_t i = 0; i + 1 < path.size(); ++i) length += (path[i + 1] - path[i]).norm();
-  const int violations = proximity.CountViolations(path);
-  (void)problem;
-  return {length * (1.0 + options.penalty * violations), violations == 0};
-}
-
 // Compares the engine with the reference on `count` decision vectors: around the straight
 // line (like a swarm's positions), uniform in the box (paths leaving the map too), and feasible
 // vectors found by random search and moved a little (paths grazing the safety distance).
@@ -82,12 +71,9 @@ int ExpectSameAsReference(const MapCase& c, const WaypointFitnessOptions& option
   auto objective = WaypointObjective::Create(problem, options);
   EXPECT_TRUE(objective.ok()) << objective.status();
   if (!objective.ok()) return 0;
-  WaypointPathBuilder builder(problem.start, problem.goal, options.waypoints, options.interpolation,
-                              options.samples);
-  absl::StatusOr<ObstacleProximity> proximity =
-      ObstacleProximity::Create(*c.map, std::max(options.d_safe, problem.clearance));
-  EXPECT_TRUE(proximity.ok());
-  if (!proximity.ok()) return 0;
+  auto reference = ReferenceWaypointObjective::Create(problem, options);
+  EXPECT_TRUE(reference.ok()) << reference.status();
+  if (!reference.ok()) return 0;
   Rng rng(11);
   const int dim = 2 * options.waypoints;
   Eigen::VectorXd x(dim);
@@ -116,7 +102,7 @@ int ExpectSameAsReference(const MapCase& c, const WaypointFitnessOptions& option
   int feasible = 0, mismatches = 0;
   for (int j = 0; j < count; ++j) {
     x = xs.col(j);
-    const Evaluation expected = ReferenceFitness(problem, options, builder, *proximity, x);
+    const Evaluation expected = (*reference)->Evaluate(x);
     const Evaluation single = (*objective)->Evaluate(x);
     EXPECT_EQ(single.fitness, batch[j].fitness);
     if (expected.feasible != batch[j].feasible ||
