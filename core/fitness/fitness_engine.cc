@@ -57,7 +57,8 @@ absl::StatusOr<FitnessEngine> FitnessEngine::Create(const Problem& problem,
 
 FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOptions& options,
                              ObstacleProximity proximity)
-    : waypoints_(options.waypoints),
+    : map_(problem.map),
+      waypoints_(options.waypoints),
       penalty_(options.penalty),
       fleet_(options.fleet),
       hard_clearance_(problem.clearance),

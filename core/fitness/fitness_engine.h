@@ -64,6 +64,7 @@ class FitnessEngine {
   Evaluation PaperPenalty(const double* x, const double* y, double length);
   Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms);
 
+  MapPtr map_;  // keeps the map, which the proximity and the field point into, alive
   int waypoints_;
   double penalty_;
   std::optional<FleetObjective> fleet_;
