@@ -4,6 +4,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "core/geometry/shape_distance_field.h"
 #include "core/geometry/simple_polygon.h"
 
 namespace swarmplan {
@@ -70,6 +71,8 @@ absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle
   world.bounds_ = bounds;
   world.circles_ = std::move(circles);
   world.polygons_ = std::move(polygons);
+  world.distance_field_ = std::make_shared<const DistanceField>(
+      ShapeDistanceField(world.bounds_, world.circles_, world.polygons_));
   return world;
 }
 

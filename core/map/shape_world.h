@@ -1,8 +1,10 @@
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "core/map/distance_field.h"
 #include "core/map/limits.h"
 #include "core/map/point.h"
 
@@ -29,7 +31,9 @@ struct Bounds2 {
 };
 
 // A bounded rectangle with circle and polygon obstacles. Free space is the rectangle minus the
-// union of the obstacles. Immutable; built once, shared between jobs.
+// union of the obstacles. Immutable; built once, shared between jobs. Create also rasterises
+// the signed distance field of the obstacles once (ShapeDistanceField: 256 cells along the
+// longer side, about 300 KB at most); the exact geometry still decides collisions.
 class ShapeWorld {
  public:
   // Validates: finite coordinates, bounds with positive area, radii > 0, polygons with at least
@@ -43,12 +47,14 @@ class ShapeWorld {
   const std::vector<Circle>& circles() const { return circles_; }
   const std::vector<Polygon>& polygons() const { return polygons_; }
   size_t ObstacleCount() const { return circles_.size() + polygons_.size(); }
+  const DistanceField& distance_field() const { return *distance_field_; }
 
  private:
   ShapeWorld() = default;
   Bounds2 bounds_;
   std::vector<Circle> circles_;
   std::vector<Polygon> polygons_;
+  std::shared_ptr<const DistanceField> distance_field_;
 };
 
 }  // namespace swarmplan

@@ -9,4 +9,12 @@ void Objective::SampleAroundStraightPath(double /*band*/, Rng& rng, Eigen::Vecto
   for (int j = 0; j < dim(); ++j) x[j] = rng.Uniform(lower()[j], upper()[j]);
 }
 
+void Objective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
+  Eigen::VectorXd x(xs.rows());
+  for (int j = 0; j < xs.cols(); ++j) {
+    x = xs.col(j);
+    out[j] = Evaluate(x);
+  }
+}
+
 }  // namespace swarmplan

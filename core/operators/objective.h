@@ -23,6 +23,9 @@ class Objective {
   virtual const Eigen::VectorXd& lower() const = 0;
   virtual const Eigen::VectorXd& upper() const = 0;
   virtual Evaluation Evaluate(const Eigen::VectorXd& x) = 0;
+  // out[j] = Evaluate(xs.col(j)) for the columns of xs (dim rows): a whole population in one
+  // call. The default evaluates column by column.
+  virtual void EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out);
 
   // A path objective's decision vector drawn inside a band of half-width `band` (map units)
   // around the straight start-goal path (the initial space C_ini of BAS eq 12). The default,

@@ -85,6 +85,7 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
     return absl::FailedPreconditionError("obstacle proximity: needs a 2D map, not a terrain");
   }
   p.grid_ = grid;
+  p.inv_res_ = 1.0 / grid->resolution();
   p.lower_ = grid->origin();
   p.upper_ = grid->origin() + Point2(grid->width(), grid->height()) * grid->resolution();
   const int w = grid->width(), h = grid->height();
@@ -172,33 +173,35 @@ int ObstacleProximity::CountOnWorld(const Path& path) {
               q.y() > upper_.y();
   }
   int count = outside ? 1 : 0;
-  const int circles = static_cast<int>(world_->circles().size());
   const size_t segments = path.size() > 1 ? path.size() - 1 : 1;
   for (size_t i = 0; i < segments; ++i) {
-    const Point2 a = path[i].head<2>();
-    const Point2 b = path[std::min(i + 1, path.size() - 1)].head<2>();
-    const Point2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
-    int x0, x1, y0, y1;
-    BucketRange(smin, smax, x0, x1, y0, y1);
-    for (int by = y0; by <= y1; ++by) {
-      for (int bx = x0; bx <= x1; ++bx) {
-        const size_t bucket = static_cast<size_t>(by) * buckets_x_ + bx;
-        for (int32_t j = bucket_start_[bucket]; j < bucket_start_[bucket + 1]; ++j) {
-          const int32_t k = bucket_items_[j];
-          if (seen_stamp_[k] == stamp_) continue;
-          if (!BoxesOverlap(smin, smax, grown_min_[k], grown_max_[k])) continue;
-          const double distance =
-              k < circles ? SegmentCircleDistance(a, b, world_->circles()[k])
-                          : SegmentPolygonDistance(a, b, world_->polygons()[k - circles].vertices);
-          if (distance < threshold_) {
-            seen_stamp_[k] = stamp_;
-            ++count;
-          }
+    CountSegmentOnWorld(path[i].head<2>(), path[std::min(i + 1, path.size() - 1)].head<2>(), count);
+  }
+  return count;
+}
+
+void ObstacleProximity::CountSegmentOnWorld(const Point2& a, const Point2& b, int& count) {
+  const int circles = static_cast<int>(world_->circles().size());
+  const Point2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+  int x0, x1, y0, y1;
+  BucketRange(smin, smax, x0, x1, y0, y1);
+  for (int by = y0; by <= y1; ++by) {
+    for (int bx = x0; bx <= x1; ++bx) {
+      const size_t bucket = static_cast<size_t>(by) * buckets_x_ + bx;
+      for (int32_t j = bucket_start_[bucket]; j < bucket_start_[bucket + 1]; ++j) {
+        const int32_t k = bucket_items_[j];
+        if (seen_stamp_[k] == stamp_) continue;
+        if (!BoxesOverlap(smin, smax, grown_min_[k], grown_max_[k])) continue;
+        const double distance =
+            k < circles ? SegmentCircleDistance(a, b, world_->circles()[k])
+                        : SegmentPolygonDistance(a, b, world_->polygons()[k - circles].vertices);
+        if (distance < threshold_) {
+          seen_stamp_[k] = stamp_;
+          ++count;
         }
       }
     }
   }
-  return count;
 }
 
 int ObstacleProximity::CountOnGrid(const Path& path) {
@@ -206,28 +209,96 @@ int ObstacleProximity::CountOnGrid(const Path& path) {
   NextStamp();
   int count = 0;
   bool outside = false;
-  const double res = grid_->resolution();
-  const double inv_res = 1.0 / res;
-  const Point2 origin = grid_->origin();
-  const int w = grid_->width(), h = grid_->height();
-  auto visit = [&](const Point2& p) {
-    const int cx = FloorToInt((p.x() - origin.x()) * inv_res);
-    const int cy = FloorToInt((p.y() - origin.y()) * inv_res);
-    if (cx < 0 || cy < 0 || cx >= w || cy >= h) {
-      outside = true;
-      return;
-    }
-    const int32_t label = label_[static_cast<size_t>(cy) * w + cx];
-    if (label >= 0 && seen_stamp_[label] != stamp_) {
-      seen_stamp_[label] = stamp_;
-      ++count;
-    }
-  };
-  visit(path[0].head<2>());
+  VisitGridPoint(path[0].head<2>(), count, outside);
   for (size_t i = 0; i + 1 < path.size(); ++i) {
-    const Point2 a = path[i].head<2>(), b = path[i + 1].head<2>();
-    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 4.0 * inv_res)));
-    for (int s = 1; s <= steps; ++s) visit(a + (b - a) * (static_cast<double>(s) / steps));
+    WalkSegmentOnGrid(path[i].head<2>(), path[i + 1].head<2>(), count, outside);
+  }
+  return count + (outside ? 1 : 0);
+}
+
+void ObstacleProximity::VisitGridPoint(const Point2& p, int& count, bool& outside) {
+  const int cx = FloorToInt((p.x() - lower_.x()) * inv_res_);
+  const int cy = FloorToInt((p.y() - lower_.y()) * inv_res_);
+  if (cx < 0 || cy < 0 || cx >= grid_->width() || cy >= grid_->height()) {
+    outside = true;
+    return;
+  }
+  const int32_t label = label_[static_cast<size_t>(cy) * grid_->width() + cx];
+  if (label >= 0 && seen_stamp_[label] != stamp_) {
+    seen_stamp_[label] = stamp_;
+    ++count;
+  }
+}
+
+void ObstacleProximity::WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count,
+                                          bool& outside) {
+  const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 4.0 * inv_res_)));
+  for (int s = 1; s <= steps; ++s) {
+    VisitGridPoint(a + (b - a) * (static_cast<double>(s) / steps), count, outside);
+  }
+}
+
+int ObstacleProximity::CountViolationsScreened(const double* xs, const double* ys,
+                                               const double* segment_length, int n) {
+  if (n <= 0) return 0;
+  NextStamp();
+  int count = 0;
+  if (world_ != nullptr) {
+    const DistanceField& field = world_->distance_field();
+    // A segment is skipped when the field proves both ends farther than threshold + half its
+    // length from every obstacle: each of its points is within half its length of an end.
+    const double margin = threshold_ + DistanceField::kCellSlack * field.cell_size() +
+                          1e-9 * field.cell_size() * field.width();
+    const double inv = field.inverse_cell_size();
+    const Point2 origin = field.origin();
+    auto clear = [&](int i) {
+      const int cx = FloorToInt((xs[i] - origin.x()) * inv);
+      const int cy = FloorToInt((ys[i] - origin.y()) * inv);
+      if (cx < 0 || cy < 0 || cx >= field.width() || cy >= field.height()) return -1.0;
+      return field.CellValue(cx, cy) - margin;
+    };
+    bool outside = false;
+    for (int i = 0; i < n; ++i) {
+      outside = outside || xs[i] < lower_.x() || ys[i] < lower_.y() || xs[i] > upper_.x() ||
+                ys[i] > upper_.y();
+    }
+    if (outside) ++count;
+    if (n == 1) {
+      CountSegmentOnWorld(Point2(xs[0], ys[0]), Point2(xs[0], ys[0]), count);
+      return count;
+    }
+    double clear_a = clear(0);
+    for (int i = 0; i + 1 < n; ++i) {
+      const double clear_b = clear(i + 1);
+      const double half = 0.5 * segment_length[i];
+      if (!(clear_a > half && clear_b > half)) {
+        CountSegmentOnWorld(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count);
+      }
+      clear_a = clear_b;
+    }
+    return count;
+  }
+  // Grid: the walk's points lie within half a segment of an end, so their cells' centres lie
+  // within that plus a cell diagonal of an end's cell centre; the grid's distance field is
+  // exact between centres, and only cells closer than the threshold carry labels.
+  const double margin = threshold_ + grid_->resolution() * (std::sqrt(2.0) + 1e-9);
+  const int w = grid_->width(), h = grid_->height();
+  auto clear = [&](int i) {
+    const int cx = FloorToInt((xs[i] - lower_.x()) * inv_res_);
+    const int cy = FloorToInt((ys[i] - lower_.y()) * inv_res_);
+    if (cx < 0 || cy < 0 || cx >= w || cy >= h) return -1.0;
+    return grid_->DistanceToObstacle(cx, cy) - margin;
+  };
+  bool outside = false;
+  VisitGridPoint(Point2(xs[0], ys[0]), count, outside);
+  double clear_a = clear(0);
+  for (int i = 0; i + 1 < n; ++i) {
+    const double clear_b = clear(i + 1);
+    const double half = 0.5 * segment_length[i];
+    if (!(clear_a > half && clear_b > half)) {
+      WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
+    }
+    clear_a = clear_b;
   }
   return count + (outside ? 1 : 0);
 }

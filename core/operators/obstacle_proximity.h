@@ -24,6 +24,13 @@ class ObstacleProximity {
   static absl::StatusOr<ObstacleProximity> Create(const Map& map, double threshold);
 
   int CountViolations(const Path& path);
+  // The same count for the path of n points (xs[i], ys[i]), with segment_length[i] the length
+  // of segment i (n - 1 values), screened by the map's distance field: a segment whose two
+  // ends the field (one read each) proves farther from every obstacle than the threshold plus
+  // half its length is not tested; the others are tested exactly as CountViolations does, so
+  // the count is the same (up to rounding at the threshold and the map's edge).
+  int CountViolationsScreened(const double* xs, const double* ys, const double* segment_length,
+                              int n);
 
   // The map's rectangle in world coordinates.
   Point2 lower() const { return lower_; }
@@ -34,6 +41,12 @@ class ObstacleProximity {
   ObstacleProximity() = default;
   int CountOnWorld(const Path& path);
   int CountOnGrid(const Path& path);
+  // The obstacles segment [a, b] comes closer to than the threshold, not yet counted.
+  void CountSegmentOnWorld(const Point2& a, const Point2& b, int& count);
+  // The grid cell of p: its label, if not yet counted, or outside.
+  void VisitGridPoint(const Point2& p, int& count, bool& outside);
+  // The quarter-cell walk along (a, b].
+  void WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count, bool& outside);
   // A fresh stamp for seen_stamp_: marks from earlier calls no longer count.
   void NextStamp();
   // The bucket range (clamped to the grid) covering the box [lo, hi].
@@ -42,6 +55,7 @@ class ObstacleProximity {
   const ShapeWorld* world_ = nullptr;
   const OccupancyGrid* grid_ = nullptr;
   double threshold_ = 0.0;
+  double inv_res_ = 1.0;  // grid cells per world unit
   Point2 lower_ = Point2::Zero();
   Point2 upper_ = Point2::Zero();
   int obstacle_count_ = 0;

@@ -8,44 +8,35 @@ namespace swarmplan {
 
 absl::StatusOr<std::unique_ptr<WaypointObjective>> WaypointObjective::Create(
     const Problem& problem, const WaypointFitnessOptions& options) {
-  if (problem.map == nullptr) return absl::InvalidArgumentError("waypoint objective: no map");
-  if (options.waypoints < 1) {
-    return absl::InvalidArgumentError("waypoint objective: waypoints must be at least 1");
-  }
-  absl::StatusOr<ObstacleProximity> proximity =
-      ObstacleProximity::Create(*problem.map, std::max(options.d_safe, problem.clearance));
-  if (!proximity.ok()) return proximity.status();
+  absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, options);
+  if (!engine.ok()) return engine.status();
   return std::unique_ptr<WaypointObjective>(
-      new WaypointObjective(problem, options, *std::move(proximity)));
+      new WaypointObjective(problem, options.waypoints, *std::move(engine)));
 }
 
-WaypointObjective::WaypointObjective(const Problem& problem, const WaypointFitnessOptions& options,
-                                     ObstacleProximity proximity)
+WaypointObjective::WaypointObjective(const Problem& problem, int waypoints, FitnessEngine engine)
     : start_(problem.start.head<2>()),
       goal_(problem.goal.head<2>()),
-      penalty_(options.penalty),
-      builder_(problem.start, problem.goal, options.waypoints, options.interpolation,
-               options.samples),
-      proximity_(std::move(proximity)) {
-  const int k = options.waypoints;
+      waypoints_(waypoints),
+      engine_(std::move(engine)) {
+  const int k = waypoints;
+  const Point2 lo = engine_.proximity().lower(), hi = engine_.proximity().upper();
   lower_.resize(2 * k);
   upper_.resize(2 * k);
-  lower_.head(k).setConstant(proximity_.lower().x());
-  lower_.tail(k).setConstant(proximity_.lower().y());
-  upper_.head(k).setConstant(proximity_.upper().x());
-  upper_.tail(k).setConstant(proximity_.upper().y());
+  lower_.head(k).setConstant(lo.x());
+  lower_.tail(k).setConstant(lo.y());
+  upper_.head(k).setConstant(hi.x());
+  upper_.tail(k).setConstant(hi.y());
 }
 
-Evaluation WaypointObjective::Evaluate(const Eigen::VectorXd& x) {
-  const Path& path = builder_.Build(x);
-  double length = 0.0;
-  for (size_t i = 0; i + 1 < path.size(); ++i) length += (path[i + 1] - path[i]).norm();
-  const int violations = proximity_.CountViolations(path);
-  return {length * (1.0 + penalty_ * violations), violations == 0};
+Path WaypointObjective::Decode(const Eigen::VectorXd& x) {
+  Path path;
+  engine_.Decode(x, path);
+  return path;
 }
 
 void WaypointObjective::SampleAroundStraightPath(double band, Rng& rng, Eigen::VectorXd& x) const {
-  const int k = builder_.waypoints();
+  const int k = waypoints_;
   x.resize(2 * k);
   const Point2 along = goal_ - start_;
   const double length = along.norm();

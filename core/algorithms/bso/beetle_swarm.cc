@@ -32,8 +32,13 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
 
   SearchOutcome out;
   out.best_fitness = std::numeric_limits<double>::infinity();
+  // The initial population in one call.
+  Eigen::MatrixXd population(dim, n);
+  for (int i = 0; i < n; ++i) population.col(i) = x[i];
+  std::vector<Evaluation> initial(n);
+  objective.EvaluateColumns(population, initial.data());
   for (int i = 0; i < n; ++i) {
-    const Evaluation e = objective.Evaluate(x[i]);
+    const Evaluation& e = initial[i];
     f[i] = f_pbest[i] = e.fitness;
     feasible_pbest[i] = e.feasible;
     if (e.fitness < out.best_fitness || i == 0) {
