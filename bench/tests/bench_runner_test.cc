@@ -282,6 +282,7 @@ TEST(BenchRunnerTest, AStarReproducesMovingAiOptimaOnArena) {
   absl::StatusOr<std::vector<BenchProblem>> problems = LoadProblems(options, notes);
   ASSERT_TRUE(problems.ok()) << problems.status();
   ASSERT_GE(problems->size(), 10u);  // one per bucket
+  AddOptima(DefaultRegistry(), absl::Seconds(10), 0.0, *problems, notes);
   std::vector<RunRecord> records;
   RunBench(
       DefaultRegistry(), *problems, options, {}, [&](const RunRecord& r) { records.push_back(r); },
@@ -289,8 +290,11 @@ TEST(BenchRunnerTest, AStarReproducesMovingAiOptimaOnArena) {
   ASSERT_EQ(records.size(), problems->size());
   for (const RunRecord& r : records) {
     ASSERT_TRUE(r.success) << "scenario " << r.scenario << ": " << notes.str();
-    ASSERT_TRUE(r.ratio.has_value());
-    EXPECT_NEAR(*r.ratio, 1.0, 1e-4) << "scenario " << r.scenario;
+    ASSERT_TRUE(r.length.has_value() && r.scen_optimal.has_value());
+    EXPECT_NEAR(*r.length / *r.scen_optimal, 1.0, 1e-4) << "scenario " << r.scenario;
+    // Against the exact any-angle optimum an 8-connected path is never shorter.
+    ASSERT_TRUE(r.ratio.has_value()) << notes.str();
+    EXPECT_GE(*r.ratio, 1.0 - 1e-9) << "scenario " << r.scenario;
   }
 }
 

@@ -56,9 +56,10 @@ Registry MakeTestRegistry() {
   info.description = "Test-only planner: sleeps through its iterations, then goes straight.";
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld, MapKind::kTerrain};
-  info.params = {ParamSpec::Int("iterations", 10, 1, 1000000, "iterations", "how many"),
-                 ParamSpec::Int("sleep_ms", 1, 0, 10000, "ms", "sleep per iteration"),
-                 ParamSpec::Int("population", 10, 1, 1000000, "", "unused; tests the limit")};
+  info.params = {
+      ParamSpec::Int("iterations", 10, 1, 1000000, "iterations", "how many"),
+      ParamSpec::Int("sleep_ms", 1, 0, 10000, "ms", "sleep per iteration"),
+      ParamSpec::Int("population", 10, 1, 1000000, "", "unused; tests the limit").PopulationSize()};
   info.factory = [](const ParamSet& p) -> std::unique_ptr<Planner> {
     return std::make_unique<SlowPlanner>(static_cast<int>(p.Int("iterations")),
                                          static_cast<int>(p.Int("sleep_ms")));

@@ -18,6 +18,7 @@
 #include "core/registry.h"
 #include "core/run.h"
 #include "gtest/gtest.h"
+#include "tests/unit/beetle_test_support.h"
 #include "tests/unit/contract_checks.h"
 #include "tests/unit/test_support.h"
 
@@ -49,21 +50,7 @@ std::function<void(const Terrain&, Point3&, Point3&)> AboveCells(int x0, int y0,
   };
 }
 
-class RecordingObserver final : public Observer {
- public:
-  explicit RecordingObserver(StopToken stop = {}, int cancel_at = -1)
-      : stop_(stop), cancel_at_(cancel_at) {}
-  void OnIteration(const IterationStats& stats) override {
-    stats_.push_back(stats);
-    if (stats.iteration == cancel_at_) stop_.Cancel();
-  }
-  const std::vector<IterationStats>& stats() const { return stats_; }
-
- private:
-  StopToken stop_;
-  int cancel_at_;
-  std::vector<IterationStats> stats_;
-};
+using beetle_testing::RecordingObserver;
 
 // The path's clearance by the checks of contract_checks.h; -1 outside the map.
 double IndependentClearance(const Map& map, const Path& path) {
@@ -91,7 +78,7 @@ std::vector<ContractMap> ContractMaps() {
                     if (!grid.ok()) return absl::StatusOr<Map>(grid.status());
                     return absl::StatusOr<Map>(Map(*std::move(grid)));
                   },
-                  Point3(2.3, 2.8, 0), Point3(29.6, 28.2, 0), 0.0});
+                  Point3(2.3, 2.8, 0), Point3(29.6, 28.2, 0), 0.0, nullptr});
   maps.push_back({"generated shape world", "",
                   [] {
                     RandomWorldOptions o;
@@ -103,14 +90,14 @@ std::vector<ContractMap> ContractMaps() {
                     if (!world.ok()) return absl::StatusOr<Map>(world.status());
                     return absl::StatusOr<Map>(Map(*std::move(world)));
                   },
-                  Point3(3, 3, 0), Point3(37, 36, 0), 0.3});
+                  Point3(3, 3, 0), Point3(37, 36, 0), 0.3, nullptr});
   maps.push_back({"arena (Moving AI)", "movingai/arena.map",
                   [] { return LoadMapFile(testing::BenchmarksDir() + "/movingai/arena.map"); },
-                  Point3(4.5, 20.5, 0), Point3(44.5, 30.5, 0), 0.0});
+                  Point3(4.5, 20.5, 0), Point3(44.5, 30.5, 0), 0.0, nullptr});
   maps.push_back(
       {"parking1 (Bench-MR)", "polygons/parking1.geojson",
        [] { return LoadMapFile(testing::BenchmarksDir() + "/polygons/parking1.geojson"); },
-       Point3(1.0, 7.2, 0), Point3(17.6, 7.2, 0), 0.1});
+       Point3(1.0, 7.2, 0), Point3(17.6, 7.2, 0), 0.1, nullptr});
   maps.push_back({"generated terrain 24x16",
                   "",
                   [] {

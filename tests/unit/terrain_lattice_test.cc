@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "core/algorithms/register.h"
 #include "core/geometry/terrain_collision.h"
 #include "core/operators/terrain_path_cost.h"
 #include "core/planner.h"
@@ -151,12 +150,7 @@ TEST(TerrainLatticeTest, MatchesBruteForceOnSmallRandomTerrains) {
   EXPECT_GE(found, 6);  // most trials have a path: the comparison is not vacuous
 }
 
-Registry TerrainRegistry() {
-  Registry registry;
-  RegisterExactPlanners(registry);
-  RegisterBeetlePlanners(registry);
-  return registry;
-}
+const Registry& TerrainRegistry() { return DefaultRegistry(); }
 
 class CountingObserver final : public Observer {
  public:
@@ -186,7 +180,7 @@ Problem ChannelProblem(double cell) {
 double ChannelOptimum(double cell) { return 9 * cell * (1.0 + 0.5 / cell); }
 
 TEST(TerrainLatticePlannerTest, FindsTheKnownOptimumInWorldUnitsInOneIteration) {
-  const Registry registry = TerrainRegistry();
+  const Registry& registry = TerrainRegistry();
   for (const double cell : {1.0, 10.0}) {
     const Problem problem = ChannelProblem(cell);
     absl::StatusOr<std::unique_ptr<Planner>> planner = registry.Create("terrain-lattice", {});
@@ -212,7 +206,7 @@ TEST(TerrainLatticePlannerTest, FindsTheKnownOptimumInWorldUnitsInOneIteration) 
 // beat it in general. In the channel the continuous optimum lies on the lattice (see
 // ChannelOptimum), so there no terrain planner's path may cost less.
 TEST(TerrainLatticePlannerTest, NoTerrainPlannerBeatsItWhereItIsTheContinuousOptimum) {
-  const Registry registry = TerrainRegistry();
+  const Registry& registry = TerrainRegistry();
   const Problem problem = ChannelProblem(2.0);
   absl::StatusOr<std::unique_ptr<Planner>> lattice = registry.Create("terrain-lattice", {});
   ASSERT_TRUE(lattice.ok());
@@ -251,7 +245,7 @@ TEST(TerrainLatticePlannerTest, RefusesWhatItCannotSearch) {
                             problem.clearance, TerrainLatticeOptions{});
   EXPECT_EQ(outside.status().code(), absl::StatusCode::kInvalidArgument);
 
-  const Registry registry = TerrainRegistry();
+  const Registry& registry = TerrainRegistry();
   Problem grid = problem;
   grid.map = std::make_shared<Map>(*OccupancyGrid::Create(4, 4, std::vector<int8_t>(16, 0)));
   NullObserver observer;

@@ -145,6 +145,7 @@ class BinaryPsoSearch {
     result.fitness = gbest_fit;
     for (const Point2& p : PathOf(gbest_bits)) result.path.emplace_back(p.x(), p.y(), 0.0);
     result.found = MakeCollisionChecker(*problem_.map)->PathFree(result.path, problem_.clearance);
+    if (!result.found) result.path.clear();  // the best vertex subset still collides
     return result;
   }
 

@@ -9,10 +9,16 @@ namespace swarmplan {
 
 SearchResult FinishExactSearch(Path path, int64_t expanded, absl::Time started,
                                Observer& observer) {
+  const double length = PathLength(path);
+  return FinishExactSearch(std::move(path), length, expanded, started, observer);
+}
+
+SearchResult FinishExactSearch(Path path, double cost, int64_t expanded, absl::Time started,
+                               Observer& observer) {
   SearchResult result;
   result.found = !path.empty();
   result.path = std::move(path);
-  result.fitness = result.found ? PathLength(result.path) : 0.0;
+  result.fitness = result.found ? cost : 0.0;
   result.iterations = 1;
   result.evaluations = expanded;
   IterationStats stats;

@@ -5,6 +5,7 @@
 
 #include "absl/time/clock.h"
 #include "core/algorithms/citations.h"
+#include "core/algorithms/exact/exact_search_result.h"
 #include "core/algorithms/exact/terrain_lattice.h"
 
 namespace swarmplan {
@@ -21,10 +22,8 @@ class TerrainLatticePlanner final : public Planner {
       return absl::FailedPreconditionError(
           "algorithm 'terrain-lattice' plans on terrain maps only");
     }
-    SearchResult result;
     if (StopReason reason = stop.Check(0); reason != StopReason::kNone) {
-      result.stop_reason = reason;
-      return result;
+      return StoppedExactSearch(reason);
     }
     const absl::Time started = absl::Now();
     TerrainLatticeOptions options = options_;
@@ -32,26 +31,9 @@ class TerrainLatticePlanner final : public Planner {
     absl::StatusOr<TerrainLatticeResult> lattice =
         TerrainLatticeOptimum(*terrain, problem.start, problem.goal, problem.clearance, options);
     if (!lattice.ok()) return lattice.status();
-    if (lattice->stopped) {
-      result.stop_reason = stop.Check(0);
-      return result;
-    }
-    // One iteration: the observer sees it once, with best = mean = the lattice optimum.
-    result.found = !lattice->path.empty();
-    result.path = std::move(lattice->path);
-    result.fitness = result.found ? lattice->cost : 0.0;
-    result.iterations = 1;
-    result.evaluations = lattice->expanded;
-    IterationStats stats;
-    stats.iteration = 0;
-    stats.best_fitness = result.fitness;
-    stats.mean_fitness = result.fitness;
-    stats.evaluations = lattice->expanded;
-    stats.elapsed = absl::Now() - started;
-    stats.feasible = result.found;
-    observer.OnIteration(stats);
-    result.convergence.push_back(stats);
-    return result;
+    if (lattice->stopped) return StoppedExactSearch(stop.Check(0));
+    return FinishExactSearch(std::move(lattice->path), lattice->cost, lattice->expanded, started,
+                             observer);
   }
 
  private:
