@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "core/map/point.h"
+#include "core/problem.h"
+#include "core/stop_token.h"
+
+namespace swarmplan {
+
+// The most seed paths FindSeedPaths returns.
+inline constexpr int kMaxSeedPaths = 8;
+
+// A collision-free path from the problem's start to its goal, exactly, keeping its clearance.
+struct SeedPath {
+  Path path;
+  double length = 0.0;  // world units, horizontal on terrain
+};
+
+// Up to `count` seed paths in distinct corridors (homotopy classes), shortest first: the exact
+// optimum of the map's kind (exact-any-angle on grids, visibility-graph on shape worlds), then,
+// each in turn, the exact optimum once the corridors of the paths before it are cut: a wall
+// across each earlier path at the middle of its length (or a third from either end when the
+// middle's wall would block the start or goal), along the path's normal from obstacle to
+// obstacle, so no later path can take that corridor. Fewer than `count` when the map has no
+// further corridor. On terrain the lattice optimum alone (terrain-lattice). Empty when no path
+// exists. The exact planners' errors (an endpoint they cannot use) are returned as they are;
+// `stop` is passed to every search, and a tripped stop ends the list early.
+absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
+                                                    const StopToken& stop);
+
+}  // namespace swarmplan
