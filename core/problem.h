@@ -4,6 +4,7 @@
 #include <string>
 
 #include "absl/time/time.h"
+#include "core/fitness/fleet_objective.h"
 #include "core/map/map.h"
 
 namespace swarmplan {
@@ -22,6 +23,9 @@ struct Problem {
   Point3 start = Point3::Zero();
   Point3 goal = Point3::Zero();
   double clearance = 0.0;
+  // What the fleet asks of the path beyond the hard clearance (preferred clearance, turning
+  // radius, their weights): the objective of the seeded planners.
+  FleetObjective fleet;
   Limits limits;
   uint64_t seed = 1;  // never 0 here: RunPlan resolves "pick one" before calling a planner
 };

@@ -61,6 +61,7 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
   if (!std::isfinite(problem.clearance) || problem.clearance < 0) {
     return absl::InvalidArgumentError("clearance: must be a finite number >= 0");
   }
+  if (absl::Status s = ValidateFleetObjective(problem.fleet); !s.ok()) return s;
   if (problem.limits.max_iterations < 0) {
     return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
   }

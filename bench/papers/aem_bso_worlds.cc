@@ -134,7 +134,8 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
     for (const std::string& interpolation : Interpolations()) {
       CellStats& cell = out.cells[{planner, interpolation}];
       PlanSpec plan{planner,
-                    {{"interpolation", interpolation},
+                    {{"init", std::string("paper")},
+                     {"interpolation", interpolation},
                      {"iterations", int64_t{iterations}},
                      {"population", int64_t{kPopulation}},
                      {"penalty", kPenalty},

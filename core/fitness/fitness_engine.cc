@@ -13,16 +13,15 @@ constexpr int64_t kBatchPoints = 1 << 14;
 // The curvature of an exact reversal, where the discrete formula divides by zero.
 constexpr double kReversalCurvature = 1e9;
 
-std::shared_ptr<const DistanceField> GridDistanceField(const OccupancyGrid& grid) {
+DistanceField GridDistanceField(const OccupancyGrid& grid) {
   std::vector<uint8_t> blocked(static_cast<size_t>(grid.width()) * grid.height());
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
       blocked[static_cast<size_t>(y) * grid.width() + x] = grid.IsBlocked(x, y) ? 1 : 0;
     }
   }
-  return std::make_shared<const DistanceField>(
-      DistanceField::FromBlockedCells(grid.width(), grid.height(), blocked, grid.resolution(),
-                                      grid.origin(), /*cap_at_edge=*/false));
+  return DistanceField::FromBlockedCells(grid.width(), grid.height(), blocked, grid.resolution(),
+                                         grid.origin(), /*cap_at_edge=*/false);
 }
 
 }  // namespace
@@ -40,15 +39,18 @@ absl::StatusOr<FitnessEngine> FitnessEngine::Create(const Problem& problem,
   if (options.fleet) {
     if (absl::Status status = ValidateFleetObjective(*options.fleet); !status.ok()) return status;
   }
-  absl::StatusOr<ObstacleProximity> proximity =
-      ObstacleProximity::Create(*problem.map, std::max(options.d_safe, problem.clearance));
+  absl::StatusOr<ObstacleProximity> proximity = ObstacleProximity::Create(
+      *problem.map,
+      options.fleet ? problem.clearance : std::max(options.d_safe, problem.clearance));
   if (!proximity.ok()) return proximity.status();
   FitnessEngine engine(problem, options, *std::move(proximity));
   if (options.fleet) {
     if (const ShapeWorld* world = problem.map->world()) {
       engine.field_ = &world->distance_field();
     } else {
-      engine.owned_field_ = GridDistanceField(*problem.map->grid());
+      const Map& map = *problem.map;
+      engine.owned_field_ = map.Derived<DistanceField>(
+          "fitness-distance-field", [&map] { return GridDistanceField(*map.grid()); });
       engine.field_ = engine.owned_field_.get();
     }
   }
@@ -145,17 +147,20 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
   // each segment beside it.
   double shortfall = 0.0, violation = 0.0;
   bool outside = false;
-  bool below = false;
   for (int i = 0; i < n; ++i) {
     clearance_[i] = field_->Bilinear(x[i], y[i]);
-    below |= clearance_[i] < hard_clearance_;
     outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
   }
+  // The field may read up to a cell low near obstacles: the shortfall below the hard clearance
+  // counts beyond that slack only, and the exact count below decides feasibility.
+  const double hard = hard_clearance_ - DistanceField::kCellSlack * field_->cell_size();
   for (int i = 0; i < n; ++i) {
     const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
     shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;
-    violation += std::max(0.0, hard_clearance_ - clearance_[i]) * ds;
+    violation += std::max(0.0, hard - clearance_[i]) * ds;
   }
+  const int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), n);
+  violation += length * obstacles;
   if (outside) {
     for (int i = 0; i < n; ++i) {
       const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
@@ -164,7 +169,7 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
       violation += std::max(0.0, -inside) * ds;
     }
   }
-  const bool feasible = !outside && !below;
+  const bool feasible = !outside && obstacles == 0;
   // Pass 2: the discrete curvature 2 tan(theta / 2) / mean segment at each interior point,
   // theta its turn: exact on a circle sampled at equal chords, unbounded toward a reversal.
   double excess = 0.0;

@@ -33,8 +33,8 @@ struct WaypointFitnessOptions {
 //   which reads the map's distance field once per point and tests exactly only the segments
 //   near an obstacle, so xi is the reference count; feasible when xi = 0;
 // - or the FleetObjective J, its distances by bilinear interpolation in the distance field
-//   (the ShapeWorld's own, or one built here from the grid); feasible when every point keeps
-//   the hard clearance by the field.
+//   (the ShapeWorld's own, or one built from the grid and cached with the map); feasible when
+//   ObstacleProximity's exact count below the hard clearance is 0.
 // Single-threaded; buffers are sized at creation, so evaluating allocates nothing.
 class FitnessEngine {
  public:
@@ -76,7 +76,7 @@ class FitnessEngine {
   Eigen::VectorXd offset_x_, offset_y_;
   ObstacleProximity proximity_;
   const DistanceField* field_ = nullptr;
-  std::shared_ptr<const DistanceField> owned_field_;  // built from a grid
+  std::shared_ptr<const DistanceField> owned_field_;  // a grid's, cached with the map
   Eigen::MatrixXd points_x_, points_y_;               // (points) x (batch) buffers
   std::vector<double> segment_;                       // segment lengths of one path
   std::vector<double> clearance_;                     // the field at its points (fleet objective)

@@ -17,8 +17,8 @@ absl::Status ValidateFleetObjective(const FleetObjective& fleet) {
                 {"violation_weight", fleet.violation_weight}};
   for (const auto& field : fields) {
     if (!std::isfinite(field.value) || field.value < 0) {
-      return absl::InvalidArgumentError(absl::StrCat(
-          "fleet objective: ", field.name, " must be finite and >= 0, got ", field.value));
+      return absl::InvalidArgumentError(
+          absl::StrCat("preferences.", field.name, ": must be finite and >= 0, got ", field.value));
     }
   }
   return absl::OkStatus();

@@ -6,13 +6,15 @@ namespace swarmplan {
 
 // The objective a fleet manager asks for, on 2D maps: length, plus a weighted shortfall below a
 // preferred clearance, plus a weighted excess of curvature over 1 / turning radius, plus a
-// weighted shortfall below the problem's hard clearance (the path's depth inside the forbidden
-// band, which keeps infeasible paths comparable). Each shortfall is integrated along the path:
+// weighted violation of the problem's hard clearance. Each shortfall is integrated along the
+// path:
 //   J = L + w_c int max(0, c_pref - d) ds + w_k int max(0, kappa - 1/R) ds
-//         + w_v int max(0, c_hard - d) ds,
+//         + w_v (L xi + int max(0, c_hard - h - d) ds),
 // d the distance to the nearest obstacle from the map's distance field (negative inside an
-// obstacle), kappa the discrete curvature at each sample. A point outside the map adds its
-// distance outside to the hard clearance's shortfall.
+// obstacle, up to a field cell h low near obstacles), kappa the discrete curvature at each
+// sample, xi the number of obstacles the path comes closer to than c_hard by exact segment
+// tests (ObstacleProximity; feasible when xi = 0). The integral below c_hard - h keeps deeply
+// infeasible paths comparable. A point outside the map adds its distance outside to it.
 struct FleetObjective {
   double preferred_clearance = 0.0;  // world units; 0: no clearance term
   double clearance_weight = 1.0;     // per unit of length and unit of shortfall
@@ -26,7 +28,7 @@ struct FleetTerms {
   double length = 0.0;
   double clearance = 0.0;  // w_c int max(0, c_pref - d) ds
   double curvature = 0.0;  // w_k int max(0, kappa - 1/R) ds
-  double violation = 0.0;  // w_v int max(0, c_hard - d) ds
+  double violation = 0.0;  // w_v (L xi + int max(0, c_hard - h - d) ds)
   double Total() const { return length + clearance + curvature + violation; }
 };
 

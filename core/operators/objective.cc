@@ -1,5 +1,7 @@
 #include "core/operators/objective.h"
 
+#include <algorithm>
+
 #include "core/random.h"
 
 namespace swarmplan {
@@ -14,6 +16,14 @@ void Objective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
   for (int j = 0; j < xs.cols(); ++j) {
     x = xs.col(j);
     out[j] = Evaluate(x);
+  }
+}
+
+void PlaceInitialGuesses(const Objective& objective, std::vector<Eigen::VectorXd>& population) {
+  const std::vector<Eigen::VectorXd> guesses = objective.InitialGuesses();
+  const size_t count = std::min(guesses.size(), population.size());
+  for (size_t i = 0; i < count; ++i) {
+    population[i] = guesses[i].cwiseMax(objective.lower()).cwiseMin(objective.upper());
   }
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
+#include <vector>
 
 #include "core/map/point.h"
 
@@ -34,6 +36,10 @@ class Objective {
   // A hook applied after each BAS move (the terrain path rationality check, eq 13); `theta` is
   // the current rationality step. The default does nothing.
   virtual void Repair(double /*theta*/, Eigen::VectorXd& /*x*/) const {}
+  // Decision vectors an optimiser puts in its initial population in place of as many drawn
+  // members (PlaceInitialGuesses): a seeded objective's seeds. None by default, which leaves
+  // the paper's initialisation alone.
+  virtual std::vector<Eigen::VectorXd> InitialGuesses() const { return {}; }
 
   void Clamp(Eigen::VectorXd& x) const { x = x.cwiseMax(lower()).cwiseMin(upper()); }
 };
@@ -41,8 +47,19 @@ class Objective {
 // An objective whose decision vectors are paths on a map.
 class PathObjective : public Objective {
  public:
+  struct KnownPath {
+    Path path;
+    double fitness = 0.0;
+  };
   // The path a decision vector stands for, start first and goal last, as evaluated.
   virtual Path Decode(const Eigen::VectorXd& x) = 0;
+  // A collision-free path known before the search and its fitness by this objective (a seeded
+  // objective's best seed): the planner returns it when the search ends on nothing better.
+  virtual std::optional<KnownPath> BestKnownPath() { return std::nullopt; }
 };
+
+// Overwrites the first members of `population` with the objective's initial guesses (as many
+// as fit), clamped to the box.
+void PlaceInitialGuesses(const Objective& objective, std::vector<Eigen::VectorXd>& population);
 
 }  // namespace swarmplan

@@ -14,7 +14,10 @@ namespace swarmplan {
 // A swarm planner as a composition: an objective built from the problem (the path encoding
 // and fitness) and an optimiser run on it. Solve seeds the Rng from problem.seed, plans
 // min(iterations, limits.max_iterations) iterations, decodes the best decision vector into the
-// path and reports found = the path is collision-free by the map's CollisionChecker.
+// path and reports found = the path is collision-free by the map's CollisionChecker. A path the
+// objective knows before the search (BestKnownPath) is the incumbent from iteration 0: the best
+// reported per iteration is never worse than it, and it is the result when the search ends on
+// nothing better or nothing collision-free.
 class PathSearchPlanner final : public Planner {
  public:
   using ObjectiveFactory =

@@ -1,5 +1,8 @@
 #include "core/operators/waypoint_params.h"
 
+#include "core/operators/seeded_waypoint_objective.h"
+#include "core/seeds/seed_paths.h"
+
 namespace swarmplan {
 
 std::vector<ParamSpec> WaypointParams(int default_iterations, int default_waypoints) {
@@ -24,6 +27,24 @@ std::vector<ParamSpec> WaypointParams(int default_iterations, int default_waypoi
   return specs;
 }
 
+std::vector<ParamSpec> WaypointSeedingParams() {
+  std::vector<ParamSpec> specs;
+  specs.push_back(
+      ParamSpec::Enum("init", "seeded", {"seeded", "paper"},
+                      "seeded: the swarm moves the control points of exact seed paths (one per "
+                      "seed vertex and segment, at most 64) within their corridors and minimises "
+                      "the fleet objective (length, preferred clearance, turning radius); it "
+                      "never returns a path worse than its best seed. paper: the paper's "
+                      "initialisation over the whole map, `waypoints` waypoints, fitness "
+                      "L (1 + M xi)")
+          .Ours());
+  specs.push_back(ParamSpec::Int("seeds", 3, 1, kMaxSeedPaths, "",
+                                 "init=seeded: seed paths in distinct corridors, the exact "
+                                 "optimum first; the population is spread over them")
+                      .Ours());
+  return specs;
+}
+
 WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {
   WaypointFitnessOptions options;
   options.waypoints = static_cast<int>(params.Int("waypoints"));
@@ -34,14 +55,40 @@ WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {
   return options;
 }
 
-PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(
-    const WaypointFitnessOptions& options) {
-  return [options](const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
-    absl::StatusOr<std::unique_ptr<WaypointObjective>> objective =
-        WaypointObjective::Create(problem, options);
-    if (!objective.ok()) return objective.status();
-    return std::unique_ptr<PathObjective>(std::move(*objective));
-  };
+WaypointSeeding WaypointSeedingFrom(const ParamSet& params) {
+  WaypointSeeding seeding;
+  if (!params.values().count("init")) {
+    seeding.seeded = false;
+    return seeding;
+  }
+  seeding.seeded = params.Enum("init") == "seeded";
+  seeding.seeds = static_cast<int>(params.Int("seeds"));
+  return seeding;
+}
+
+PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitnessOptions& options,
+                                                             const WaypointSeeding& seeding) {
+  return
+      [options, seeding](const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
+        if (seeding.seeded) {
+          absl::StatusOr<std::vector<SeedPath>> seeds =
+              FindSeedPaths(problem, seeding.seeds, StopToken());
+          if (!seeds.ok()) return seeds.status();
+          if (seeds->empty()) {
+            return absl::NotFoundError("init=seeded: no path from start to goal exists");
+          }
+          WaypointFitnessOptions fleet = options;
+          fleet.fleet = problem.fleet;
+          absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> objective =
+              SeededWaypointObjective::Create(problem, fleet, *seeds, kMaxSeededControlPoints);
+          if (!objective.ok()) return objective.status();
+          return std::unique_ptr<PathObjective>(std::move(*objective));
+        }
+        absl::StatusOr<std::unique_ptr<WaypointObjective>> objective =
+            WaypointObjective::Create(problem, options);
+        if (!objective.ok()) return objective.status();
+        return std::unique_ptr<PathObjective>(std::move(*objective));
+      };
 }
 
 double DoubleOr(const ParamSet& params, const std::string& name, double fallback) {

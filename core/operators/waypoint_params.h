@@ -14,8 +14,25 @@ namespace swarmplan {
 std::vector<ParamSpec> WaypointParams(int default_iterations, int default_waypoints);
 WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params);
 
-// Builds a WaypointObjective for the problem's 2D map.
-PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitnessOptions& options);
+// How a waypoint planner initialises: `init=seeded` (the service default) searches
+// SeededWaypointObjective's corridors of `seeds` seed paths under the problem's fleet
+// objective; `init=paper` the paper's WaypointObjective over the map's rectangle, with the
+// paper's fitness.
+struct WaypointSeeding {
+  bool seeded = true;
+  int seeds = 3;
+};
+// `init` and `seeds`, for the planners that offer both initialisations.
+std::vector<ParamSpec> WaypointSeedingParams();
+// The paper's initialisation when the planner has no `init` parameter.
+WaypointSeeding WaypointSeedingFrom(const ParamSet& params);
+
+// The most control points of a seeded waypoint path.
+inline constexpr int kMaxSeededControlPoints = 64;
+
+// Builds the objective of a waypoint planner for the problem's 2D map.
+PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitnessOptions& options,
+                                                             const WaypointSeeding& seeding);
 
 // A parameter's value when declared by the planner, else `fallback`.
 double DoubleOr(const ParamSet& params, const std::string& name, double fallback);

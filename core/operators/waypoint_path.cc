@@ -1,5 +1,7 @@
 #include "core/operators/waypoint_path.h"
 
+#include <algorithm>
+
 #include "absl/strings/str_cat.h"
 
 namespace swarmplan {
@@ -42,6 +44,18 @@ const Path& WaypointPathBuilder::Build(const Eigen::VectorXd& x) {
     case Interpolation::kLinear:
       path_.assign(knots_.begin(), knots_.end());
       break;
+    case Interpolation::kPolyline: {
+      const int per_segment = std::max(1, (samples_ - 1) / (waypoints_ + 1));
+      path_.clear();
+      for (size_t i = 0; i + 1 < knots_.size(); ++i) {
+        for (int j = 0; j < per_segment; ++j) {
+          const double t = static_cast<double>(j) / per_segment;
+          path_.push_back(knots_[i] + t * (knots_[i + 1] - knots_[i]));
+        }
+      }
+      path_.push_back(knots_.back());
+      break;
+    }
     case Interpolation::kNearest:
       path_.clear();
       path_.push_back(knots_[0]);

@@ -13,7 +13,10 @@ namespace swarmplan {
 // How the waypoints of a 2D path are joined (AEM-BSO Table 2): a parametric not-a-knot cubic
 // spline sampled at `samples` points; straight segments; or nearest-neighbour interpolation of y
 // over x, which makes a staircase (x moves linearly, y jumps half-way between waypoints).
-enum class Interpolation { kSpline, kLinear, kNearest };
+// kPolyline is kLinear with each segment sampled evenly, (samples - 1) / (k + 1) points a
+// segment, for objectives read at the path's points (the fleet objective of seeded planners);
+// it is not a parameter value.
+enum class Interpolation { kSpline, kLinear, kNearest, kPolyline };
 
 absl::StatusOr<Interpolation> ParseInterpolation(const std::string& name);
 std::vector<std::string> InterpolationNames();

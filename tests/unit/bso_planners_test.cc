@@ -6,7 +6,8 @@
 #include <string>
 
 #include "beetle_test_support.h"
-#include "core/graph/theta_star.h"
+#include "core/optimum.h"
+#include "core/registry.h"
 #include "gtest/gtest.h"
 
 namespace swarmplan {
@@ -54,12 +55,9 @@ double ExactOptimum(const Problem& problem) {
     const double d = 18.0 * std::sqrt(2.0), r = 4.0;
     return 2.0 * std::sqrt(d * d - r * r) + r * (std::numbers::pi - 2.0 * std::acos(r / d));
   }
-  const OccupancyGrid& grid = *problem.map->grid();
-  const auto checker = MakeCollisionChecker(*problem.map);
-  const GridSearchResult result = ThetaStar(grid, *checker, grid.CellAt(problem.start.head<2>()),
-                                            grid.CellAt(problem.goal.head<2>()));
-  EXPECT_TRUE(result.found);
-  return result.length;
+  const Optimum optimum = ComputeOptimum(DefaultRegistry(), problem, absl::Seconds(10));
+  EXPECT_TRUE(optimum.known) << optimum.reason;
+  return optimum.length;
 }
 
 struct Case {

@@ -132,7 +132,7 @@ PathSearchPlanner::ObjectiveFactory BasObjectiveFactory(
     if (!waypoints.has_value()) {
       return absl::InvalidArgumentError("this planner needs a terrain map");
     }
-    return WaypointObjectiveFactory(*waypoints)(problem);
+    return WaypointObjectiveFactory(*waypoints, WaypointSeeding{false, 1})(problem);
   };
 }
 

@@ -19,6 +19,9 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
   out.best_fitness = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < dim; ++j) x[i][j] = rng.Uniform(objective.lower()[j], objective.upper()[j]);
+  }
+  PlaceInitialGuesses(objective, x);
+  for (int i = 0; i < n; ++i) {
     const Evaluation e = objective.Evaluate(x[i]);
     f[i] = e.fitness;
     if (i == 0 || e.fitness < out.best_fitness) {

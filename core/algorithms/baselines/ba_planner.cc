@@ -20,7 +20,8 @@ PlannerInfo BatInfo() {
   info.seed_paper = citations::kBat;
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
-  info.params = WaypointParams(500, 3);
+  info.params = WaypointSeedingParams();
+  AppendParams(info.params, WaypointParams(500, 3));
   info.params.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "bats").PopulationSize());
   info.params.push_back(ParamSpec::Double("f_min", 0.0, 0.0, 100.0, "", "lowest frequency").Ours());
   info.params.push_back(
@@ -37,7 +38,7 @@ PlannerInfo BatInfo() {
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     const BatOptions options = BatOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(
-        WaypointObjectiveFactory(WaypointFitnessFrom(params)),
+        WaypointObjectiveFactory(WaypointFitnessFrom(params), WaypointSeedingFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
                   Observer& observer) -> absl::StatusOr<SearchOutcome> {
           return RunBatAlgorithm(objective, options, t_max, rng, stop, observer);

@@ -12,7 +12,8 @@ namespace swarmplan {
 namespace {
 
 std::vector<ParamSpec> SwarmParams(bool aem, const std::string& inertia) {
-  std::vector<ParamSpec> specs = WaypointParams(500, 3);
+  std::vector<ParamSpec> specs = WaypointSeedingParams();
+  AppendParams(specs, WaypointParams(500, 3));
   specs.push_back(ParamSpec::Int("population", 100, 2, 100000, "", "beetles").PopulationSize());
   specs.push_back(ParamSpec::Enum("inertia", inertia, {"linear", "cosine"},
                                   "inertia schedule: linear (eq 4) or cos(pi/2 sqrt(t/tmax)) "
@@ -56,7 +57,7 @@ PlannerInfo SwarmInfo(const std::string& id, const std::string& description, boo
   info.factory = [aem](const ParamSet& params) -> std::unique_ptr<Planner> {
     const BeetleSwarmOptions options = BeetleSwarmOptionsFromParams(aem, params);
     return std::make_unique<PathSearchPlanner>(
-        WaypointObjectiveFactory(WaypointFitnessFrom(params)),
+        WaypointObjectiveFactory(WaypointFitnessFrom(params), WaypointSeedingFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
                   Observer& observer) -> absl::StatusOr<SearchOutcome> {
           return RunBeetleSwarm(objective, options, t_max, rng, stop, observer);

@@ -20,7 +20,8 @@ PlannerInfo PsoInfo() {
   info.seed_paper = citations::kPso;
   info.encoding = Encoding::kWaypoints;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};
-  info.params = WaypointParams(500, 3);
+  info.params = WaypointSeedingParams();
+  AppendParams(info.params, WaypointParams(500, 3));
   info.params.push_back(
       ParamSpec::Int("population", 100, 2, 100000, "", "particles").PopulationSize());
   info.params.push_back(ParamSpec::Double("w_max", 0.9, 0.0, 2.0, "", "initial inertia"));
@@ -33,7 +34,7 @@ PlannerInfo PsoInfo() {
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     const BeetleSwarmOptions options = PsoOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(
-        WaypointObjectiveFactory(WaypointFitnessFrom(params)),
+        WaypointObjectiveFactory(WaypointFitnessFrom(params), WaypointSeedingFrom(params)),
         [options](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
                   Observer& observer) -> absl::StatusOr<SearchOutcome> {
           return RunBeetleSwarm(objective, options, t_max, rng, stop, observer);

@@ -1,0 +1,215 @@
+#include "core/operators/seeded_waypoint_objective.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "core/geometry/collision.h"
+
+namespace swarmplan {
+namespace {
+
+// Path points the engine reads per evaluation at most, and the spacing it aims for between
+// them in cells of the map's distance field.
+constexpr int kMaxPoints = 4096;
+constexpr double kPointSpacingCells = 0.5;
+
+// A control point of a seed: its arc length position and the vertex it is, if any.
+struct Station {
+  double s = 0.0;
+  int vertex = -1;  // index into the seed's path, or -1 on a segment
+};
+
+// The stations of one seed, `k` of them: interior vertices, then segment midpoints, then the
+// midpoints of the longest gaps; evenly chosen vertices when there are more than k.
+std::vector<Station> Stations(const Path& path, int k) {
+  std::vector<double> at(path.size(), 0.0);
+  for (size_t i = 1; i < path.size(); ++i)
+    at[i] = at[i - 1] + (path[i] - path[i - 1]).head<2>().norm();
+  const double total = at.back();
+  const int interior = static_cast<int>(path.size()) - 2;
+  std::vector<Station> stations;
+  if (interior > k) {
+    for (int i = 0; i < k; ++i) {
+      const int v = k == 1 ? 1 + interior / 2
+                           : 1 + static_cast<int>(std::llround((interior - 1.0) * i / (k - 1)));
+      stations.push_back({at[v], v});
+    }
+  } else {
+    for (int v = 1; v <= interior; ++v) stations.push_back({at[v], v});
+  }
+  while (static_cast<int>(stations.size()) < k) {
+    // Split the longest gap between consecutive stations (start and goal included).
+    double best_gap = -1.0, best_mid = 0.0;
+    double previous = 0.0;
+    for (size_t i = 0; i <= stations.size(); ++i) {
+      const double next = i < stations.size() ? stations[i].s : total;
+      if (next - previous > best_gap) {
+        best_gap = next - previous;
+        best_mid = 0.5 * (previous + next);
+      }
+      previous = next;
+    }
+    stations.push_back({best_mid, -1});
+    std::sort(stations.begin(), stations.end(),
+              [](const Station& a, const Station& b) { return a.s < b.s; });
+  }
+  return stations;
+}
+
+Point2 PointAt(const Path& path, double s, size_t& segment) {
+  double walked = 0.0;
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    const double length = (path[i + 1] - path[i]).head<2>().norm();
+    if (walked + length >= s || i + 2 == path.size()) {
+      segment = i;
+      const double t = length > 0 ? std::clamp((s - walked) / length, 0.0, 1.0) : 0.0;
+      return path[i].head<2>() + t * (path[i + 1] - path[i]).head<2>();
+    }
+    walked += length;
+  }
+  segment = 0;
+  return path.front().head<2>();
+}
+
+double FieldCell(const Map& map) {
+  if (const OccupancyGrid* grid = map.grid()) return grid->resolution();
+  return map.world()->distance_field().cell_size();
+}
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective::Create(
+    const Problem& problem, WaypointFitnessOptions options, const std::vector<SeedPath>& seeds,
+    int max_control_points) {
+  if (problem.map == nullptr || problem.map->is_3d()) {
+    return absl::InvalidArgumentError("seeded waypoint objective: needs a 2D map");
+  }
+  if (seeds.empty()) return absl::InvalidArgumentError("seeded waypoint objective: no seed path");
+  if (max_control_points < 1) {
+    return absl::InvalidArgumentError("seeded waypoint objective: max_control_points must be >= 1");
+  }
+  // One control point per interior vertex and per segment, the same count for every seed.
+  int k = 1;
+  double longest = 0.0;
+  for (const SeedPath& seed : seeds) {
+    k = std::max(k, 2 * static_cast<int>(seed.path.size()) - 3);
+    longest = std::max(longest, seed.length);
+  }
+  k = std::min(k, max_control_points);
+
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*problem.map);
+  const double cell = FieldCell(*problem.map);
+  std::vector<std::vector<ControlPoint>> corridors;
+  for (const SeedPath& seed : seeds) {
+    const std::vector<Station> stations = Stations(seed.path, k);
+    std::vector<ControlPoint> points;
+    for (size_t i = 0; i < stations.size(); ++i) {
+      const double before = stations[i].s - (i > 0 ? stations[i - 1].s : 0.0);
+      const double after =
+          (i + 1 < stations.size() ? stations[i + 1].s : seed.length) - stations[i].s;
+      size_t segment = 0;
+      const Point2 p = PointAt(seed.path, stations[i].s, segment);
+      const Point2 normal = stations[i].vertex > 0 ? VertexNormal(seed.path, stations[i].vertex)
+                                                   : SegmentNormal(seed.path, segment);
+      const double reach = std::max(before + after, 4.0 * cell);
+      ControlPoint c;
+      c.section = SectionAt(*checker, p, normal, problem.clearance, reach, 0.05 * cell);
+      c.tangent = Point2(normal.y(), -normal.x());
+      c.along = 0.5 * std::min(before, after);
+      points.push_back(c);
+    }
+    corridors.push_back(std::move(points));
+  }
+
+  // Points enough to read the field every half cell along a path half again the longest seed.
+  const int wanted = static_cast<int>(
+      std::min<double>(kMaxPoints, std::ceil(1.5 * longest / (kPointSpacingCells * cell))));
+  options.waypoints = k;
+  options.samples = std::max(options.samples, wanted);
+  if (options.interpolation == Interpolation::kLinear)
+    options.interpolation = Interpolation::kPolyline;
+  absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, options);
+  if (!engine.ok()) return engine.status();
+
+  std::unique_ptr<SeededWaypointObjective> objective(
+      new SeededWaypointObjective(k, std::move(corridors), *std::move(engine), std::nullopt));
+
+  // The best seed by the same fitness, read as the polyline it is.
+  WaypointFitnessOptions polyline = options;
+  polyline.interpolation = Interpolation::kPolyline;
+  absl::StatusOr<FitnessEngine> polyline_engine = FitnessEngine::Create(problem, polyline);
+  if (!polyline_engine.ok()) return polyline_engine.status();
+  const std::vector<Eigen::VectorXd> guesses = objective->InitialGuesses();
+  Eigen::VectorXd waypoints(2 * k);
+  for (size_t j = 0; j < seeds.size(); ++j) {
+    objective->Waypoints(guesses[j].data(), waypoints.data());
+    const Evaluation e = polyline_engine->Evaluate(waypoints);
+    if (!objective->best_seed_ || e.fitness < objective->best_seed_->fitness) {
+      objective->best_seed_ = KnownPath{seeds[j].path, e.fitness};
+    }
+  }
+  return objective;
+}
+
+SeededWaypointObjective::SeededWaypointObjective(int k,
+                                                 std::vector<std::vector<ControlPoint>> corridors,
+                                                 FitnessEngine engine,
+                                                 std::optional<KnownPath> best_seed)
+    : k_(k),
+      corridors_(std::move(corridors)),
+      engine_(std::move(engine)),
+      best_seed_(std::move(best_seed)) {
+  lower_ = Eigen::VectorXd::Constant(1 + 2 * k_, -1.0);
+  upper_ = Eigen::VectorXd::Constant(1 + 2 * k_, 1.0);
+  single_.resize(2 * k_);
+  lower_[0] = 0.0;
+  upper_[0] = static_cast<double>(corridors_.size());
+}
+
+void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) const {
+  const int last = static_cast<int>(corridors_.size()) - 1;
+  const int seed = std::clamp(static_cast<int>(std::floor(x[0])), 0, last);
+  const std::vector<ControlPoint>& points = corridors_[seed];
+  for (int i = 0; i < k_; ++i) {
+    const ControlPoint& c = points[i];
+    const double u = x[1 + i], v = x[1 + k_ + i];
+    const double across = v >= 0 ? v * c.section.left : v * c.section.right;
+    const Point2 p = c.section.point + u * c.along * c.tangent + across * c.section.normal;
+    waypoints[i] = p.x();
+    waypoints[k_ + i] = p.y();
+  }
+}
+
+Evaluation SeededWaypointObjective::Evaluate(const Eigen::VectorXd& x) {
+  Waypoints(x.data(), single_.data());
+  return engine_.Evaluate(single_);
+}
+
+void SeededWaypointObjective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
+  waypoints_.resize(2 * k_, xs.cols());
+  for (int j = 0; j < xs.cols(); ++j) Waypoints(xs.col(j).data(), waypoints_.col(j).data());
+  engine_.Evaluate(waypoints_, out);
+}
+
+Path SeededWaypointObjective::Decode(const Eigen::VectorXd& x) {
+  Eigen::VectorXd waypoints(2 * k_);
+  Waypoints(x.data(), waypoints.data());
+  Path path;
+  engine_.Decode(waypoints, path);
+  return path;
+}
+
+std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
+  std::vector<Eigen::VectorXd> guesses;
+  for (size_t j = 0; j < corridors_.size(); ++j) {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
+    x[0] = static_cast<double>(j) + 0.5;
+    guesses.push_back(std::move(x));
+  }
+  return guesses;
+}
+
+}  // namespace swarmplan

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "core/fitness/fitness_engine.h"
+#include "core/operators/objective.h"
+#include "core/problem.h"
+#include "core/seeds/corridor.h"
+#include "core/seeds/seed_paths.h"
+
+namespace swarmplan {
+
+// The waypoint path problem on seed paths (FindSeedPaths): a decision vector
+// [s, u1..uk, v1..vk] picks seed floor(s) (s in [0, K)) and moves each of its k control points
+// along the seed by u_i (in [-1, 1], times half the distance to the nearer neighbouring control
+// point) and across it by v_i (in [-1, 1], times the free extent of its corridor on that side,
+// CorridorSection). The control points of a seed are its interior vertices and the midpoints of
+// its segments, in order (more midpoints on the longest gaps when another seed has more, evenly
+// thinned beyond `max_control_points`), so with every offset 0 the path is the seed itself
+// under linear interpolation. The moved points are the waypoints [x1..xk, y1..yk] of a
+// FitnessEngine, which interpolates and evaluates them as for every waypoint planner. The
+// search space grows with the seeds' turns, not with the map.
+class SeededWaypointObjective final : public PathObjective {
+ public:
+  static absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> Create(
+      const Problem& problem, WaypointFitnessOptions options, const std::vector<SeedPath>& seeds,
+      int max_control_points);
+
+  int dim() const override { return 1 + 2 * k_; }
+  const Eigen::VectorXd& lower() const override { return lower_; }
+  const Eigen::VectorXd& upper() const override { return upper_; }
+  Evaluation Evaluate(const Eigen::VectorXd& x) override;
+  void EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) override;
+  Path Decode(const Eigen::VectorXd& x) override;
+  // The seeds themselves: selector at the middle of each seed's interval, every offset 0.
+  std::vector<Eigen::VectorXd> InitialGuesses() const override;
+  std::optional<KnownPath> BestKnownPath() override { return best_seed_; }
+
+  int control_points() const { return k_; }
+  int seeds() const { return static_cast<int>(corridors_.size()); }
+  FitnessEngine& engine() { return engine_; }
+  // The engine's waypoint vector [x1..xk, y1..yk] for a decision vector.
+  void Waypoints(const double* x, double* waypoints) const;
+
+ private:
+  struct ControlPoint {
+    CorridorSection section;
+    Point2 tangent;
+    double along = 0.0;  // the largest move along the seed
+  };
+  SeededWaypointObjective(int k, std::vector<std::vector<ControlPoint>> corridors,
+                          FitnessEngine engine, std::optional<KnownPath> best_seed);
+
+  int k_;
+  std::vector<std::vector<ControlPoint>> corridors_;  // per seed, k control points
+  FitnessEngine engine_;
+  std::optional<KnownPath> best_seed_;
+  Eigen::VectorXd lower_, upper_;
+  Eigen::VectorXd single_;     // engine input of Evaluate, 2k
+  Eigen::MatrixXd waypoints_;  // engine input of EvaluateColumns, 2k x batch
+};
+
+}  // namespace swarmplan
