@@ -128,6 +128,12 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
                             ->check(CLI::PositiveNumber);
   app.add_option("--clearance", o.clearance, "Clearance from obstacles, world units")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--preferred-clearance", o.preferred_clearance,
+                 "Preferred clearance of the fleet objective, world units (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--turning-radius", o.turning_radius,
+                 "Turning radius of the fleet objective, world units (0: none)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--optimum-budget", o.optimum_budget_seconds,
                  "Seconds per problem for its exact optimum, the `optimal` column (0: none)")
       ->check(CLI::NonNegativeNumber);

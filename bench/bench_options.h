@@ -31,6 +31,9 @@ struct BenchOptions {
   int max_iterations = 0;  // 0: each planner's default
   std::optional<double> time_budget_seconds;
   double clearance = 0.0;
+  // The fleet objective's preferences of every problem (Problem::fleet).
+  double preferred_clearance = 0.0;
+  double turning_radius = 0.0;
   double optimum_budget_seconds = 10.0;  // per problem, for the exact optimum; 0: none
   std::string smoothing = "none";
   std::string csv_path;  // "" for stdout

@@ -187,6 +187,8 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   request.problem.start = problem.start;
   request.problem.goal = problem.goal;
   request.problem.clearance = options.clearance;
+  request.problem.fleet.preferred_clearance = options.preferred_clearance;
+  request.problem.fleet.turning_radius = options.turning_radius;
   request.problem.limits.max_iterations = options.max_iterations;
   if (options.time_budget_seconds) {
     request.problem.limits.time_budget = absl::Seconds(*options.time_budget_seconds);
@@ -229,6 +231,10 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
                   record.optimal);
   record.iterations = result->iterations;
   record.evaluations = result->evaluations;
+  record.fitness = result->fitness;
+  if (!result->convergence.empty())
+    record.initial_fitness = result->convergence.front().best_fitness;
+  record.best_iteration = result->best_iteration;
   record.wall_seconds = absl::ToDoubleSeconds(result->wall_time);
   return record;
 }

@@ -49,7 +49,8 @@ std::string CsvField(const std::string& text) {
 
 std::string CsvHeader() {
   return "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
-         "max_curvature,iterations,evaluations,wall_seconds\n";
+         "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,best_"
+         "iteration\n";
 }
 
 std::string CsvRow(const RunRecord& r) {
@@ -68,6 +69,9 @@ std::string CsvRow(const RunRecord& r) {
       absl::StrCat(r.iterations),
       absl::StrCat(r.evaluations),
       absl::StrFormat("%.6f", r.wall_seconds),
+      FormatOptional(r.fitness),
+      FormatOptional(r.initial_fitness),
+      absl::StrCat(r.best_iteration),
   };
   return absl::StrCat(absl::StrJoin(fields, ","), "\n");
 }

@@ -23,6 +23,11 @@ struct RunRecord {
   int iterations = 0;
   int64_t evaluations = 0;
   double wall_seconds = 0.0;
+  // The planner's objective: its final best, its best after the initial population (for a
+  // seeded planner, about its best seed's), and the iteration that reached the final best.
+  std::optional<double> fitness;
+  std::optional<double> initial_fitness;
+  int best_iteration = 0;
 };
 
 // length / optimal for a successful run with a known optimum; 1 when both are zero (start ==

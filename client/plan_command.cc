@@ -24,6 +24,8 @@ struct PlanOptions {
   std::vector<std::string> params;
   uint64_t seed = 0;
   double clearance = 0.0;
+  double preferred_clearance = 0.0;
+  double turning_radius = 0.0;
   int max_iterations = 0;
   std::string time_budget;
   std::string smoothing;
@@ -79,6 +81,12 @@ absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options,
   }
   request.set_seed(options.seed);
   request.set_clearance(options.clearance);
+  if (options.preferred_clearance > 0) {
+    request.mutable_preferences()->set_preferred_clearance(options.preferred_clearance);
+  }
+  if (options.turning_radius > 0) {
+    request.mutable_preferences()->set_turning_radius(options.turning_radius);
+  }
   request.mutable_limits()->set_max_iterations(options.max_iterations);
   if (!options.time_budget.empty()) {
     absl::StatusOr<double> seconds = ParseSeconds("--time-budget", options.time_budget);
@@ -163,6 +171,15 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
       ->allow_extra_args(false);
   command->add_option("--seed", options->seed, "Random seed; 0: the server picks one");
   command->add_option("--clearance", options->clearance, "Distance to keep from obstacles")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--preferred-clearance", options->preferred_clearance,
+                   "Distance the path keeps from obstacles where it can (fleet objective of the "
+                   "seeded swarm planners); 0: none")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--turning-radius", options->turning_radius,
+                   "Smallest turning radius of the robot (fleet objective); 0: none")
       ->check(CLI::NonNegativeNumber);
   command
       ->add_option("--max-iterations", options->max_iterations,

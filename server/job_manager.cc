@@ -142,6 +142,7 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   plan.problem.start = FromProto(request.start());
   plan.problem.goal = FromProto(request.goal());
   plan.problem.clearance = request.clearance();
+  plan.problem.fleet = FromProto(request.preferences());
   plan.problem.limits.max_iterations = request.limits().max_iterations() > 0
                                            ? request.limits().max_iterations()
                                            : config_.max_iterations;

@@ -41,6 +41,15 @@ v1::Point ToProto(const Point3& p) {
 
 Point3 FromProto(const v1::Point& p) { return Point3(p.x(), p.y(), p.z()); }
 
+FleetObjective FromProto(const v1::PathPreferences& p) {
+  FleetObjective fleet;
+  fleet.preferred_clearance = p.preferred_clearance();
+  fleet.turning_radius = p.turning_radius();
+  if (p.has_clearance_weight()) fleet.clearance_weight = p.clearance_weight();
+  if (p.has_curvature_weight()) fleet.curvature_weight = p.curvature_weight();
+  return fleet;
+}
+
 v1::MapKind ToProto(MapKind kind) {
   switch (kind) {
     case MapKind::kOccupancyGrid:

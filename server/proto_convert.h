@@ -20,6 +20,8 @@ absl::Duration FromProto(const google::protobuf::Duration& d);
 
 v1::Point ToProto(const Point3& p);
 Point3 FromProto(const v1::Point& p);
+// Unset weights are 1, as the .proto says.
+FleetObjective FromProto(const v1::PathPreferences& p);
 v1::MapKind ToProto(MapKind kind);
 
 v1::ParamValue ToProto(const ParamValue& value);

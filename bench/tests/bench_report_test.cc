@@ -75,7 +75,8 @@ TEST(BenchReportTest, CsvFieldQuotesOnlyWhenNeeded) {
 TEST(BenchReportTest, CsvHeaderHasTheDocumentedColumns) {
   EXPECT_EQ(CsvHeader(),
             "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
-            "max_curvature,iterations,evaluations,wall_seconds\n");
+            "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,"
+            "best_iteration\n");
 }
 
 TEST(BenchReportTest, CsvRowOfASuccessfulRun) {
@@ -87,13 +88,17 @@ TEST(BenchReportTest, CsvRowOfASuccessfulRun) {
   r.max_curvature = 0.0;
   r.iterations = 3;
   r.evaluations = 120;
+  r.fitness = 12.5;
+  r.initial_fitness = 13.0;
+  r.best_iteration = 2;
   EXPECT_EQ(CsvRow(r),
-            "\"my,map.map\",(1 2)->(3 4),astar,42,true,12.5,10,1.25,10.5,0.5,0,3,120,0.250000\n");
+            "\"my,map.map\",(1 2)->(3 4),astar,42,true,12.5,10,1.25,10.5,0.5,0,3,120,0.250000,12.5,"
+            "13,2\n");
 }
 
 TEST(BenchReportTest, CsvRowOfAFailedRunLeavesMeasuresEmpty) {
   const RunRecord r = Record("pso", "arena.map", false, 0.0, std::nullopt, 1.0);
-  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,,0,0,1.000000\n");
+  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,,0,0,1.000000,,,0\n");
 }
 
 TEST(BenchReportTest, SummarizeGroupsByPlannerAndMapInFirstSeenOrder) {

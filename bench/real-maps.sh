@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# The waypoint swarms on real maps, bench/results/real-maps.md: bso, aem-bso, aem-bso-linear,
+# pso and ba with init=seeded (the default) and init=paper side by side, through swarmplan-bench,
+# on every shared Moving AI map (3 scenarios spread over the .scen file: short, middle, long) and
+# every shared polygon world (one long query), seeds 1-3, a time budget of 1 s per plan:
+#   length: no preferences (the fleet objective is the length; clearance 0 on grids);
+#   fleet:  clearance 0.5, preferred clearance 1.5, turning radius 2 (world units = cells on
+#           the Moving AI maps), init=seeded only (its path is the swarm's spline; no smoothing).
+# Writes OUT_DIR/{length,paper,fleet}-MAP.csv and OUT_DIR/summary.md (the report's tables).
+#
+# Usage: bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
+# One run after another on one core, about 25 minutes.
+set -euo pipefail
+
+BUILD_DIR=${1:-build}
+OUT=${2:-/tmp/real-maps}
+HERE=$(cd "$(dirname "$0")" && pwd)
+SHARED=${SHARED_DIR:-$HERE/../../shared/benchmarks}
+BENCH="nice -n 10 $BUILD_DIR/bench/swarmplan-bench"
+PLANNERS=(--planner bso --planner aem-bso --planner aem-bso-linear --planner pso --planner ba)
+PAPER=()
+for p in bso aem-bso aem-bso-linear pso ba; do PAPER+=(--param "$p.init=paper"); done
+COMMON=(--seed 1 --runs 3 --time-budget 1)
+FLEET=(--clearance 0.5 --preferred-clearance 1.5 --turning-radius 2)
+mkdir -p "$OUT"
+
+MAPS=(arena den312d den011d Berlin_0_256 Boston_0_256 8room_000 random512-10-0 maze512-32-9
+  AcrosstheCape)
+for m in "${MAPS[@]}"; do
+  echo "== $m" >&2
+  SEL=(--map "$SHARED/movingai/$m.map" --scen "$SHARED/movingai/$m.map.scen" --scenarios 3)
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --csv "$OUT/length-$m.csv" 2>>"$OUT/notes.txt"
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${PAPER[@]}" --csv "$OUT/paper-$m.csv" \
+    2>>"$OUT/notes.txt"
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$m.csv" \
+    2>>"$OUT/notes.txt"
+done
+
+# world start goal: the long queries of bench/exact-yardsticks-polygons.sh.
+QUERIES=(
+  "parking1 1.0,7.2 17.6,7.2"
+  "parking3 1.0,12.35 35.7,16.35"
+  "warehouse 4.93,9.46 80.84,75.84"
+  "warehouse2 5.29,5.89 119.19,76.02"
+)
+for q in "${QUERIES[@]}"; do
+  read -r world start goal <<<"$q"
+  echo "== $world" >&2
+  SEL=(--map "$SHARED/polygons/$world.geojson" --start "$start" --goal "$goal")
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --csv "$OUT/length-$world.csv" \
+    2>>"$OUT/notes.txt"
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${PAPER[@]}" --csv "$OUT/paper-$world.csv" \
+    2>>"$OUT/notes.txt"
+  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$world.csv" \
+    2>>"$OUT/notes.txt"
+done
+
+python3 - "$OUT" "${MAPS[@]}" parking1 parking3 warehouse warehouse2 <<'PY'
+import csv, os, statistics, sys
+out, maps = sys.argv[1], sys.argv[2:]
+planners = ["bso", "aem-bso", "aem-bso-linear", "pso", "ba"]
+
+def rows(kind, m):
+    path = os.path.join(out, f"{kind}-{m}.csv")
+    return list(csv.DictReader(open(path))) if os.path.exists(path) else []
+
+def num(r, k):
+    return float(r[k]) if r.get(k) not in (None, "") else None
+
+def cell(rs):
+    if not rs:
+        return "–", "–", "–", "–"
+    ok = [r for r in rs if r["success"] == "true"]
+    ratios = sorted(num(r, "ratio") for r in ok if num(r, "ratio") is not None)
+    times = [float(r["wall_seconds"]) for r in rs]
+    succ = f"{len(ok)}/{len(rs)}"
+    med = f"{statistics.median(ratios):.3f}" if ratios else "–"
+    worst = f"{max(ratios):.3f}" if ratios else "–"
+    return succ, med, worst, f"{statistics.median(times):.2f}"
+
+print("## Length: init=seeded against init=paper\n")
+print("Success, median and worst length / exact optimum, median seconds per plan.\n")
+print("| map | planner | seeded success | seeded median | seeded worst | seeded s | paper success | paper median | paper worst | paper s |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+for m in maps:
+    L, P = rows("length", m), rows("paper", m)
+    for p in planners:
+        s = cell([r for r in L if r["planner"] == p])
+        q = cell([r for r in P if r["planner"] == p])
+        print(f"| {m} | {p} | " + " | ".join(s) + " | " + " | ".join(q) + " |")
+
+print("\n## Fleet: clearance 0.5, preferred clearance 1.5, turning radius 2 (init=seeded)\n")
+print("Success; median and worst length / exact optimum (with the clearance); runs whose final")
+print("objective is below the best after the initial population (the seeds), and the median")
+print("improvement of the objective; successful runs whose largest curvature is at most 1 / R;")
+print("median seconds per plan.\n")
+print("| map | planner | success | median ratio | worst ratio | improved on the seed | median improvement | curvature <= 1/R | s |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+for m in maps:
+    F = rows("fleet", m)
+    for p in planners:
+        rs = [r for r in F if r["planner"] == p]
+        if not rs:
+            continue
+        succ, med, worst, sec = cell(rs)
+        gains = []
+        better = 0
+        for r in rs:
+            f, f0 = num(r, "fitness"), num(r, "initial_fitness")
+            if f is None or f0 is None or f0 <= 0:
+                continue
+            gains.append(1 - f / f0)
+            better += f < f0 * (1 - 1e-9)
+        gain = f"{100 * statistics.median(gains):.1f} %" if gains else "–"
+        ok = [r for r in rs if r["success"] == "true"]
+        bounded = sum(1 for r in ok if num(r, "max_curvature") is not None
+                      and num(r, "max_curvature") <= 0.5 * (1 + 1e-6))
+        print(f"| {m} | {p} | {succ} | {med} | {worst} | {better}/{len(rs)} | {gain} | "
+              f"{bounded}/{len(ok)} | {sec} |")
+PY
