@@ -8,7 +8,7 @@
 #           the Moving AI maps), init=seeded only (its path is the swarm's spline; no smoothing).
 # Writes OUT_DIR/{length,paper,fleet}-MAP.csv and OUT_DIR/summary.md (the report's tables).
 #
-# Usage: bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
+# Usage: [MODES="length paper fleet"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
 # One run after another on one core, about 25 minutes.
 set -euo pipefail
 
@@ -22,18 +22,32 @@ PAPER=()
 for p in bso aem-bso aem-bso-linear pso ba; do PAPER+=(--param "$p.init=paper"); done
 COMMON=(--seed 1 --runs 3 --time-budget 1)
 FLEET=(--clearance 0.5 --preferred-clearance 1.5 --turning-radius 2)
+MODES=${MODES:-length paper fleet}
 mkdir -p "$OUT"
+# mode NAME: whether NAME is among the MODES to run.
+mode() { [[ " $MODES " == *" $1 "* ]]; }
+
+# run_modes: the selected modes on SEL, files named after $m.
+run_modes() {
+  if mode length; then
+    $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --csv "$OUT/length-$m.csv" 2>>"$OUT/notes.txt"
+  fi
+  if mode paper; then
+    $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${PAPER[@]}" --csv "$OUT/paper-$m.csv" \
+      2>>"$OUT/notes.txt"
+  fi
+  if mode fleet; then
+    $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$m.csv" \
+      2>>"$OUT/notes.txt"
+  fi
+}
 
 MAPS=(arena den312d den011d Berlin_0_256 Boston_0_256 8room_000 random512-10-0 maze512-32-9
   AcrosstheCape)
 for m in "${MAPS[@]}"; do
   echo "== $m" >&2
   SEL=(--map "$SHARED/movingai/$m.map" --scen "$SHARED/movingai/$m.map.scen" --scenarios 3)
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --csv "$OUT/length-$m.csv" 2>>"$OUT/notes.txt"
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${PAPER[@]}" --csv "$OUT/paper-$m.csv" \
-    2>>"$OUT/notes.txt"
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$m.csv" \
-    2>>"$OUT/notes.txt"
+  run_modes
 done
 
 # world start goal: the long queries of bench/exact-yardsticks-polygons.sh.
@@ -47,12 +61,7 @@ for q in "${QUERIES[@]}"; do
   read -r world start goal <<<"$q"
   echo "== $world" >&2
   SEL=(--map "$SHARED/polygons/$world.geojson" --start "$start" --goal "$goal")
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --csv "$OUT/length-$world.csv" \
-    2>>"$OUT/notes.txt"
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${PAPER[@]}" --csv "$OUT/paper-$world.csv" \
-    2>>"$OUT/notes.txt"
-  $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$world.csv" \
-    2>>"$OUT/notes.txt"
+  m=$world run_modes
 done
 
 python3 - "$OUT" "${MAPS[@]}" parking1 parking3 warehouse warehouse2 <<'PY'

@@ -115,6 +115,15 @@ void PrintResultTable(const v1::PlanResult& result) {
     add(absl::StrCat("smoothed (", result.smoothing(), ")"), result.smoothed_path_size(),
         result.smoothed_metrics());
   }
+  for (int i = 0; i < result.alternatives_size(); ++i) {
+    const v1::AlternativePath& alternative = result.alternatives(i);
+    add(absl::StrCat("alternative ", i + 1, " (fitness ", FormatNumber(alternative.fitness()),
+                     alternative.has_optimality_ratio()
+                         ? absl::StrCat(", ratio ", FormatNumber(alternative.optimality_ratio()))
+                         : std::string(),
+                     ")"),
+        alternative.path_size(), alternative.metrics());
+  }
   table.Print(std::cout);
 }
 

@@ -26,6 +26,7 @@ struct PlanOptions {
   double clearance = 0.0;
   double preferred_clearance = 0.0;
   double turning_radius = 0.0;
+  int alternatives = 0;
   int max_iterations = 0;
   std::string time_budget;
   std::string smoothing;
@@ -87,6 +88,7 @@ absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options,
   if (options.turning_radius > 0) {
     request.mutable_preferences()->set_turning_radius(options.turning_radius);
   }
+  request.set_alternatives(options.alternatives);
   request.mutable_limits()->set_max_iterations(options.max_iterations);
   if (!options.time_budget.empty()) {
     absl::StatusOr<double> seconds = ParseSeconds("--time-budget", options.time_budget);
@@ -181,6 +183,11 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
       ->add_option("--turning-radius", options->turning_radius,
                    "Smallest turning radius of the robot (fleet objective); 0: none")
       ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--alternatives", options->alternatives,
+                   "Up to K paths in distinct corridors, the result's included (seeded swarm "
+                   "planners); 0: the result alone")
+      ->check(CLI::Range(0, 8));
   command
       ->add_option("--max-iterations", options->max_iterations,
                    "Iteration cap; 0: the planner's default")

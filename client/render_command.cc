@@ -114,6 +114,13 @@ int Run(const GlobalOptions& global, const RenderCommandOptions& options) {
       for (const v1::Point& p : points) rendered.points.emplace_back(p.x(), p.y(), p.z());
       paths.push_back(std::move(rendered));
     }
+    for (int i = 0; i < result.alternatives_size(); ++i) {
+      RenderedPath rendered{absl::StrCat(label, " alternative ", i + 1), {}};
+      for (const v1::Point& p : result.alternatives(i).path()) {
+        rendered.points.emplace_back(p.x(), p.y(), p.z());
+      }
+      paths.push_back(std::move(rendered));
+    }
     ConvergenceCurve curve{label, {}};
     for (const v1::IterationStats& stats : result.convergence()) {
       curve.best.push_back(

@@ -44,6 +44,13 @@ struct SearchResult {
   int best_iteration = 0;  // iteration at which the final best was first reached
   StopReason stop_reason = StopReason::kNone;
   std::vector<IterationStats> convergence;
+  // Other collision-free paths, each in a corridor of its own and none in the path's, best
+  // (lowest fitness) first; at most problem.alternatives - 1.
+  struct Alternative {
+    Path path;
+    double fitness = 0.0;
+  };
+  std::vector<Alternative> alternatives;
 };
 
 // The one interface every planner implements. A planner is a value type carrying its validated

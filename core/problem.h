@@ -9,6 +9,9 @@
 
 namespace swarmplan {
 
+// The most paths a plan may ask for (Problem::alternatives).
+inline constexpr int kMaxAlternatives = 8;
+
 struct Limits {
   int max_iterations = 0;  // 0: the planner's own default
   absl::Duration time_budget = absl::InfiniteDuration();
@@ -26,6 +29,10 @@ struct Problem {
   // What the fleet asks of the path beyond the hard clearance (preferred clearance, turning
   // radius, their weights): the objective of the seeded planners.
   FleetObjective fleet;
+  // Up to this many paths in distinct corridors, the result's included: a planner that can
+  // (the seeded waypoint swarms) returns the others as SearchResult::alternatives. 0 or 1:
+  // none.
+  int alternatives = 0;
   Limits limits;
   uint64_t seed = 1;  // never 0 here: RunPlan resolves "pick one" before calling a planner
 };

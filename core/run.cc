@@ -62,6 +62,10 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
     return absl::InvalidArgumentError("clearance: must be a finite number >= 0");
   }
   if (absl::Status s = ValidateFleetObjective(problem.fleet); !s.ok()) return s;
+  if (problem.alternatives < 0 || problem.alternatives > kMaxAlternatives) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "alternatives: must be in [0, ", kMaxAlternatives, "], got ", problem.alternatives));
+  }
   if (problem.limits.max_iterations < 0) {
     return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
   }
@@ -130,6 +134,12 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
     result.smoothed_path = std::move(smoothed->path);
     result.smoothing_collision_free = smoothed->collision_free;
   }
+  for (SearchResult::Alternative& alternative : search->alternatives) {
+    PlanResult::Alternative& out = result.alternatives.emplace_back();
+    out.metrics = EvaluatePath(map, alternative.path, problem.clearance);
+    out.path = std::move(alternative.path);
+    out.fitness = alternative.fitness;
+  }
   result.raw_metrics = EvaluatePath(map, result.raw_path, problem.clearance);
   result.smoothed_metrics = EvaluatePath(map, result.smoothed_path, problem.clearance);
   result.wall_time = absl::Now() - start_time;
@@ -144,6 +154,9 @@ void SetOptimum(const Map& map, Optimum optimum, PlanResult& result) {
                                : result.raw_path;
   result.optimality_ratio =
       result.found ? OptimalityRatio(PlanCost(map, final_path), result.optimum) : 0.0;
+  for (PlanResult::Alternative& alternative : result.alternatives) {
+    alternative.optimality_ratio = OptimalityRatio(PlanCost(map, alternative.path), result.optimum);
+  }
 }
 
 }  // namespace swarmplan

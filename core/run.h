@@ -46,6 +46,15 @@ struct PlanResult {
   // empty: see SetOptimum.
   Optimum optimum;
   double optimality_ratio = 0.0;
+  // Paths in other corridors when the problem asked for alternatives (raw, not smoothed), best
+  // first; optimality_ratio set by SetOptimum like the result's.
+  struct Alternative {
+    Path path;
+    PathMetrics metrics;
+    double fitness = 0.0;
+    double optimality_ratio = 0.0;
+  };
+  std::vector<Alternative> alternatives;
 };
 
 // Checks the request (known algorithm, parameters, map kind, start and goal inside the map and

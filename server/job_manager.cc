@@ -143,6 +143,7 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   plan.problem.goal = FromProto(request.goal());
   plan.problem.clearance = request.clearance();
   plan.problem.fleet = FromProto(request.preferences());
+  plan.problem.alternatives = request.alternatives();
   plan.problem.limits.max_iterations = request.limits().max_iterations() > 0
                                            ? request.limits().max_iterations()
                                            : config_.max_iterations;

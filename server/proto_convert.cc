@@ -164,6 +164,13 @@ v1::PlanResult ToProto(const PlanResult& r) {
   } else {
     out.set_optimum_note(r.optimum.reason);
   }
+  for (const PlanResult::Alternative& a : r.alternatives) {
+    v1::AlternativePath* alternative = out.add_alternatives();
+    for (const Point3& p : a.path) *alternative->add_path() = ToProto(p);
+    *alternative->mutable_metrics() = ToProto(a.metrics);
+    alternative->set_fitness(a.fitness);
+    if (r.optimum.known) alternative->set_optimality_ratio(a.optimality_ratio);
+  }
   return out;
 }
 

@@ -56,6 +56,13 @@ class PathObjective : public Objective {
   // A collision-free path known before the search and its fitness by this objective (a seeded
   // objective's best seed): the planner returns it when the search ends on nothing better.
   virtual std::optional<KnownPath> BestKnownPath() { return std::nullopt; }
+  // The corridors of a seeded objective: how many, the one a decision vector lies in, and the
+  // corridor of BestKnownPath. One corridor (0) by default.
+  virtual int Corridors() const { return 1; }
+  virtual int CorridorOf(const Eigen::VectorXd& /*x*/) const { return 0; }
+  virtual int BestKnownCorridor() const { return 0; }
+  // The known path of a corridor (a seed) and its fitness; none by default.
+  virtual std::optional<KnownPath> KnownPathIn(int /*corridor*/) { return std::nullopt; }
 };
 
 // Overwrites the first members of `population` with the objective's initial guesses (as many

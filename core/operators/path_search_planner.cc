@@ -1,5 +1,6 @@
 #include "core/operators/path_search_planner.h"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -30,6 +31,47 @@ class IncumbentObserver final : public Observer {
   double known_;
 };
 
+// The best collision-free path of every corridor but `taken`, from the final population and the
+// corridor's known path, best first, at most `count`.
+std::vector<SearchResult::Alternative> Alternatives(PathObjective& objective,
+                                                    const SearchOutcome& outcome, int taken,
+                                                    int count, const CollisionChecker& checker,
+                                                    double clearance) {
+  // Exact checks per corridor at most: members beyond them are not worth the time.
+  constexpr int kTriesPerCorridor = 4;
+  std::vector<int> order(outcome.population.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return outcome.population_fitness[a] < outcome.population_fitness[b];
+  });
+  std::vector<SearchResult::Alternative> found;
+  for (int corridor = 0; corridor < objective.Corridors(); ++corridor) {
+    if (corridor == taken) continue;
+    std::optional<SearchResult::Alternative> best;
+    if (std::optional<PathObjective::KnownPath> known = objective.KnownPathIn(corridor);
+        known && checker.PathFree(known->path, clearance)) {
+      best = SearchResult::Alternative{std::move(known->path), known->fitness};
+    }
+    int tries = 0;
+    for (int i : order) {
+      if (tries == kTriesPerCorridor) break;
+      if (objective.CorridorOf(outcome.population[i]) != corridor) continue;
+      if (best && best->fitness <= outcome.population_fitness[i]) break;
+      ++tries;
+      Path path = objective.Decode(outcome.population[i]);
+      if (checker.PathFree(path, clearance)) {
+        best = SearchResult::Alternative{std::move(path), outcome.population_fitness[i]};
+        break;
+      }
+    }
+    if (best) found.push_back(*std::move(best));
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& a, const auto& b) { return a.fitness < b.fitness; });
+  if (static_cast<int>(found.size()) > count) found.resize(count);
+  return found;
+}
+
 }  // namespace
 
 absl::StatusOr<SearchResult> PathSearchPlanner::Solve(const Problem& problem, const StopToken& stop,
@@ -56,16 +98,25 @@ absl::StatusOr<SearchResult> PathSearchPlanner::Solve(const Problem& problem, co
   result.stop_reason = outcome->stop_reason;
   result.convergence = std::move(outcome->convergence);
   for (IterationStats& stats : result.convergence) incumbent.Apply(stats);
+  int corridor = -1;
   if (outcome->best_x.size() == (*objective)->dim() && (*objective)->dim() > 0) {
     Path path = (*objective)->Decode(outcome->best_x);
     result.found = checker->PathFree(path, problem.clearance);
-    if (result.found) result.path = std::move(path);
+    if (result.found) {
+      result.path = std::move(path);
+      corridor = (*objective)->CorridorOf(outcome->best_x);
+    }
   }
   if (known && (!result.found || known->fitness <= result.fitness)) {
     result.found = true;
     result.path = std::move(known->path);
     result.fitness = known->fitness;
     result.best_iteration = 0;
+    corridor = (*objective)->BestKnownCorridor();
+  }
+  if (result.found && problem.alternatives > 1) {
+    result.alternatives = Alternatives(**objective, *outcome, corridor, problem.alternatives - 1,
+                                       *checker, problem.clearance);
   }
   return result;
 }

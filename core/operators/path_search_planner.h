@@ -17,7 +17,9 @@ namespace swarmplan {
 // path and reports found = the path is collision-free by the map's CollisionChecker. A path the
 // objective knows before the search (BestKnownPath) is the incumbent from iteration 0: the best
 // reported per iteration is never worse than it, and it is the result when the search ends on
-// nothing better or nothing collision-free.
+// nothing better or nothing collision-free. With problem.alternatives > 1 the result also holds
+// the best collision-free path of each other corridor of the objective (from the final
+// population or the corridor's known path).
 class PathSearchPlanner final : public Planner {
  public:
   using ObjectiveFactory =

@@ -21,6 +21,10 @@ struct SearchOutcome {
   int best_iteration = 0;
   StopReason stop_reason = StopReason::kNone;
   std::vector<IterationStats> convergence;
+  // The final population (each member's best for the swarms that keep one) and its fitness,
+  // for the planners that offer alternatives; empty when an optimiser does not report it.
+  std::vector<Eigen::VectorXd> population;
+  std::vector<double> population_fitness;
 };
 
 // What one iteration reports to the loop.

@@ -135,7 +135,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   if (!engine.ok()) return engine.status();
 
   std::unique_ptr<SeededWaypointObjective> objective(
-      new SeededWaypointObjective(k, std::move(corridors), *std::move(engine), std::nullopt));
+      new SeededWaypointObjective(k, std::move(corridors), *std::move(engine)));
 
   // The best seed by the same fitness, read as the polyline it is.
   WaypointFitnessOptions polyline = options;
@@ -147,8 +147,9 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   for (size_t j = 0; j < seeds.size(); ++j) {
     objective->Waypoints(guesses[j].data(), waypoints.data());
     const Evaluation e = polyline_engine->Evaluate(waypoints);
-    if (!objective->best_seed_ || e.fitness < objective->best_seed_->fitness) {
-      objective->best_seed_ = KnownPath{seeds[j].path, e.fitness};
+    objective->seed_paths_.push_back(KnownPath{seeds[j].path, e.fitness});
+    if (e.fitness < objective->seed_paths_[objective->best_seed_].fitness) {
+      objective->best_seed_ = static_cast<int>(j);
     }
   }
   return objective;
@@ -156,12 +157,8 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
 
 SeededWaypointObjective::SeededWaypointObjective(int k,
                                                  std::vector<std::vector<ControlPoint>> corridors,
-                                                 FitnessEngine engine,
-                                                 std::optional<KnownPath> best_seed)
-    : k_(k),
-      corridors_(std::move(corridors)),
-      engine_(std::move(engine)),
-      best_seed_(std::move(best_seed)) {
+                                                 FitnessEngine engine)
+    : k_(k), corridors_(std::move(corridors)), engine_(std::move(engine)) {
   lower_ = Eigen::VectorXd::Constant(1 + 2 * k_, -1.0);
   upper_ = Eigen::VectorXd::Constant(1 + 2 * k_, 1.0);
   single_.resize(2 * k_);
@@ -169,10 +166,15 @@ SeededWaypointObjective::SeededWaypointObjective(int k,
   upper_[0] = static_cast<double>(corridors_.size());
 }
 
-void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) const {
+int SeededWaypointObjective::SeedIndex(double selector) const {
   const int last = static_cast<int>(corridors_.size()) - 1;
-  const int seed = std::clamp(static_cast<int>(std::floor(x[0])), 0, last);
-  const std::vector<ControlPoint>& points = corridors_[seed];
+  return std::clamp(static_cast<int>(std::floor(selector)), 0, last);
+}
+
+int SeededWaypointObjective::CorridorOf(const Eigen::VectorXd& x) const { return SeedIndex(x[0]); }
+
+void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) const {
+  const std::vector<ControlPoint>& points = corridors_[SeedIndex(x[0])];
   for (int i = 0; i < k_; ++i) {
     const ControlPoint& c = points[i];
     const double u = x[1 + i], v = x[1 + k_ + i];

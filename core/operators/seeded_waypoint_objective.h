@@ -38,7 +38,11 @@ class SeededWaypointObjective final : public PathObjective {
   Path Decode(const Eigen::VectorXd& x) override;
   // The seeds themselves: selector at the middle of each seed's interval, every offset 0.
   std::vector<Eigen::VectorXd> InitialGuesses() const override;
-  std::optional<KnownPath> BestKnownPath() override { return best_seed_; }
+  std::optional<KnownPath> BestKnownPath() override { return seed_paths_[best_seed_]; }
+  int Corridors() const override { return static_cast<int>(corridors_.size()); }
+  int CorridorOf(const Eigen::VectorXd& x) const override;
+  int BestKnownCorridor() const override { return best_seed_; }
+  std::optional<KnownPath> KnownPathIn(int corridor) override { return seed_paths_[corridor]; }
 
   int control_points() const { return k_; }
   int seeds() const { return static_cast<int>(corridors_.size()); }
@@ -53,12 +57,15 @@ class SeededWaypointObjective final : public PathObjective {
     double along = 0.0;  // the largest move along the seed
   };
   SeededWaypointObjective(int k, std::vector<std::vector<ControlPoint>> corridors,
-                          FitnessEngine engine, std::optional<KnownPath> best_seed);
+                          FitnessEngine engine);
+  // The seed a selector s picks: floor(s), clamped to the seeds.
+  int SeedIndex(double selector) const;
 
   int k_;
   std::vector<std::vector<ControlPoint>> corridors_;  // per seed, k control points
   FitnessEngine engine_;
-  std::optional<KnownPath> best_seed_;
+  std::vector<KnownPath> seed_paths_;  // each seed as a polyline, by the same fitness
+  int best_seed_ = 0;
   Eigen::VectorXd lower_, upper_;
   Eigen::VectorXd single_;     // engine input of Evaluate, 2k
   Eigen::MatrixXd waypoints_;  // engine input of EvaluateColumns, 2k x batch

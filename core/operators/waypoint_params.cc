@@ -1,5 +1,7 @@
 #include "core/operators/waypoint_params.h"
 
+#include <algorithm>
+
 #include "core/operators/seeded_waypoint_objective.h"
 #include "core/seeds/seed_paths.h"
 
@@ -72,7 +74,7 @@ PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitne
       [options, seeding](const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
         if (seeding.seeded) {
           absl::StatusOr<std::vector<SeedPath>> seeds =
-              FindSeedPaths(problem, seeding.seeds, StopToken());
+              FindSeedPaths(problem, std::max(seeding.seeds, problem.alternatives), StopToken());
           if (!seeds.ok()) return seeds.status();
           if (seeds->empty()) {
             return absl::NotFoundError("init=seeded: no path from start to goal exists");

@@ -110,6 +110,8 @@ TEST_F(BadInputTest, EveryBadPlanRequestGetsTheRightCodeAndNamesTheField) {
       {"negative preferred clearance",
        [](auto& r) { r.mutable_preferences()->set_preferred_clearance(-1); }, C::INVALID_ARGUMENT,
        "preferences.preferred_clearance"},
+      {"too many alternatives", [](auto& r) { r.set_alternatives(9); }, C::INVALID_ARGUMENT,
+       "alternatives"},
       {"turning radius not finite",
        [](auto& r) { r.mutable_preferences()->set_turning_radius(std::nan("")); },
        C::INVALID_ARGUMENT, "preferences.turning_radius"},

@@ -133,6 +133,54 @@ TEST(SeededPlannersTest, PreferredClearanceMovesThePathOffTheWalls) {
   }
 }
 
+// Where the path crosses the wall row of TwoDoorGrid.
+double DoorOf(const Path& path) {
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    const double y0 = path[i].y(), y1 = path[i + 1].y();
+    if (y0 <= 15.5 && y1 > 15.5)
+      return path[i].x() + (15.5 - y0) / (y1 - y0) * (path[i + 1].x() - path[i].x());
+  }
+  return -1;
+}
+
+TEST(SeededPlannersTest, AlternativesTakeTheOtherCorridors) {
+  for (const std::string& algorithm : kSeededPlanners) {
+    SCOPED_TRACE(algorithm);
+    PlanRequest request;
+    request.algorithm = algorithm;
+    request.problem.map = TwoDoorGrid();
+    request.problem.start = Point3(20.5, 5.5, 0);
+    request.problem.goal = Point3(20.5, 25.5, 0);
+    request.problem.alternatives = 3;
+    request.problem.limits.max_iterations = 40;
+    testing::NullObserver observer;
+    absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, StopToken(), observer);
+    ASSERT_TRUE(result.ok()) << result.status();
+    ASSERT_TRUE(result->found);
+    ASSERT_EQ(result->alternatives.size(), 1u) << "two doors: the result's and one more";
+    const PlanResult::Alternative& other = result->alternatives[0];
+    EXPECT_EQ(other.path.front(), request.problem.start);
+    EXPECT_EQ(other.path.back(), request.problem.goal);
+    EXPECT_GT(Clearance(*request.problem.map, other.path), 0.0);
+    EXPECT_TRUE(other.metrics.collision_free);
+    EXPECT_GE(other.fitness, result->fitness);
+    const double mine = DoorOf(result->raw_path), theirs = DoorOf(other.path);
+    EXPECT_TRUE((mine >= 30 && mine <= 34 && theirs >= 4 && theirs <= 8)) << mine << " " << theirs;
+  }
+  // Without the request there are none; the count is bounded.
+  absl::StatusOr<PlanResult> plain = Plan("aem-bso", TwoDoorGrid(), {20.5, 5.5}, {20.5, 25.5}, 10);
+  ASSERT_TRUE(plain.ok());
+  EXPECT_TRUE(plain->alternatives.empty());
+  PlanRequest too_many;
+  too_many.algorithm = "aem-bso";
+  too_many.problem.map = TwoDoorGrid();
+  too_many.problem.start = Point3(20.5, 5.5, 0);
+  too_many.problem.goal = Point3(20.5, 25.5, 0);
+  too_many.problem.alternatives = kMaxAlternatives + 1;
+  EXPECT_EQ(ValidatePlanRequest(DefaultRegistry(), too_many).code(),
+            absl::StatusCode::kInvalidArgument);
+}
+
 TEST(SeededPlannersTest, SameSeedSamePath) {
   for (const std::string& algorithm : kSeededPlanners) {
     SCOPED_TRACE(algorithm);

@@ -66,6 +66,8 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
     }
     return IterationSummary{n > 0 ? sum / n : 0.0};
   });
+  out.population = std::move(x);
+  out.population_fitness = std::move(f);
   return out;
 }
 

@@ -100,6 +100,8 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
     delta *= options.step_decay;
     return IterationSummary{mean};
   });
+  out.population = std::move(pbest);
+  out.population_fitness = std::move(f_pbest);
   return out;
 }
 
