@@ -136,6 +136,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
 
   std::unique_ptr<SeededWaypointObjective> objective(
       new SeededWaypointObjective(k, std::move(corridors), *std::move(engine)));
+  objective->away_ = std::max(cell, options.fleet ? options.fleet->preferred_clearance : 0.0);
 
   // The best seed by the same fitness, read as the polyline it is.
   WaypointFitnessOptions polyline = options;
@@ -209,6 +210,19 @@ std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
   for (size_t j = 0; j < corridors_.size(); ++j) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
     x[0] = static_cast<double>(j) + 0.5;
+    guesses.push_back(std::move(x));
+  }
+  // Each seed again with every control point moved toward the middle of its section, by at most
+  // `away_`: off the walls the seed grazes, where a spline through it has room to turn.
+  for (size_t j = 0; j < corridors_.size(); ++j) {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
+    x[0] = static_cast<double>(j) + 0.5;
+    for (int i = 0; i < k_; ++i) {
+      const CorridorSection& s = corridors_[j][i].section;
+      const double move = std::clamp(0.5 * (s.left - s.right), -away_, away_);
+      if (move > 0 && s.left > 0) x[1 + k_ + i] = move / s.left;
+      if (move < 0 && s.right > 0) x[1 + k_ + i] = move / s.right;
+    }
     guesses.push_back(std::move(x));
   }
   return guesses;

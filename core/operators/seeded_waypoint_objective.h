@@ -36,7 +36,9 @@ class SeededWaypointObjective final : public PathObjective {
   Evaluation Evaluate(const Eigen::VectorXd& x) override;
   void EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) override;
   Path Decode(const Eigen::VectorXd& x) override;
-  // The seeds themselves: selector at the middle of each seed's interval, every offset 0.
+  // The seeds themselves (selector at the middle of each seed's interval, every offset 0), then
+  // each seed with its control points moved toward the middle of their corridor sections by at
+  // most max(preferred clearance, a field cell).
   std::vector<Eigen::VectorXd> InitialGuesses() const override;
   std::optional<KnownPath> BestKnownPath() override { return seed_paths_[best_seed_]; }
   int Corridors() const override { return static_cast<int>(corridors_.size()); }
@@ -66,6 +68,7 @@ class SeededWaypointObjective final : public PathObjective {
   FitnessEngine engine_;
   std::vector<KnownPath> seed_paths_;  // each seed as a polyline, by the same fitness
   int best_seed_ = 0;
+  double away_ = 0.0;  // the largest move of the second guess of each seed
   Eigen::VectorXd lower_, upper_;
   Eigen::VectorXd single_;     // engine input of Evaluate, 2k
   Eigen::MatrixXd waypoints_;  // engine input of EvaluateColumns, 2k x batch
