@@ -10,6 +10,9 @@ namespace {
 
 // Path points held per batch: bounds the point buffers whatever the sample count.
 constexpr int64_t kBatchPoints = 1 << 14;
+// How far (field cells) the fleet objective's shortfall below the hard clearance starts below
+// it, so that a path along an obstacle's boundary costs nothing for the raster's error.
+constexpr double kHardSlackCells = 2.0;
 // The curvature of an exact reversal, where the discrete formula divides by zero.
 constexpr double kReversalCurvature = 1e9;
 
@@ -151,9 +154,10 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
     clearance_[i] = field_->Bilinear(x[i], y[i]);
     outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
   }
-  // The field may read up to a cell low near obstacles: the shortfall below the hard clearance
-  // counts beyond that slack only, and the exact count below decides feasibility.
-  const double hard = hard_clearance_ - DistanceField::kCellSlack * field_->cell_size();
+  // The conservative raster may read a point on an obstacle's boundary up to about 1.5 cells
+  // inside it: the shortfall below the hard clearance counts beyond kHardSlackCells only, and
+  // the exact count below decides feasibility.
+  const double hard = hard_clearance_ - kHardSlackCells * field_->cell_size();
   for (int i = 0; i < n; ++i) {
     const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
     shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;

@@ -11,10 +11,11 @@ namespace swarmplan {
 //   J = L + w_c int max(0, c_pref - d) ds + w_k int max(0, kappa - 1/R) ds
 //         + w_v (L xi + int max(0, c_hard - h - d) ds),
 // d the distance to the nearest obstacle from the map's distance field (negative inside an
-// obstacle, up to a field cell h low near obstacles), kappa the discrete curvature at each
-// sample, xi the number of obstacles the path comes closer to than c_hard by exact segment
-// tests (ObstacleProximity; feasible when xi = 0). The integral below c_hard - h keeps deeply
-// infeasible paths comparable. A point outside the map adds its distance outside to it.
+// obstacle; near an obstacle it may read low by up to about 1.5 field cells), h two field
+// cells, kappa the discrete curvature at each sample, xi the number of obstacles the path comes
+// closer to than c_hard by exact segment tests (ObstacleProximity; feasible when xi = 0). The
+// integral below c_hard - h keeps deeply infeasible paths comparable. A point outside the map adds
+// its distance outside to it.
 struct FleetObjective {
   double preferred_clearance = 0.0;  // world units; 0: no clearance term
   double clearance_weight = 1.0;     // per unit of length and unit of shortfall
