@@ -9,7 +9,7 @@
 # Writes OUT_DIR/{length,paper,fleet}-MAP.csv and OUT_DIR/summary.md (the report's tables).
 #
 # Usage: [MODES="length paper fleet"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
-# One run after another on one core, about 25 minutes.
+# One run after another on one core, about 25 minutes (two MODES side by side: about 10).
 set -euo pipefail
 
 BUILD_DIR=${1:-build}
