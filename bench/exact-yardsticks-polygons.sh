@@ -13,14 +13,8 @@ WORLDS=${POLYGONS_DIR:-$HERE/../../shared/benchmarks/polygons}
 BENCH="$BUILD_DIR/bench/swarmplan-bench"
 mkdir -p "$OUT"
 
-# world start goal: a long query through free space (points found by a scan for clearance >= 0.8).
-QUERIES=(
-  "parking1 1.0,7.2 17.6,7.2"
-  "parking3 1.0,12.35 35.7,16.35"
-  "warehouse 4.93,9.46 80.84,75.84"
-  "warehouse2 5.29,5.89 119.19,76.02"
-)
-for q in "${QUERIES[@]}"; do
+source "$HERE/polygon-queries.sh"
+for q in "${POLYGON_QUERIES[@]}"; do
   read -r world start goal <<<"$q"
   for clearance in 0 0.5; do
     "$BENCH" --planner visibility-graph --map "$WORLDS/$world.geojson" --start "$start" \

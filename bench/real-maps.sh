@@ -50,14 +50,8 @@ for m in "${MAPS[@]}"; do
   run_modes
 done
 
-# world start goal: the long queries of bench/exact-yardsticks-polygons.sh.
-QUERIES=(
-  "parking1 1.0,7.2 17.6,7.2"
-  "parking3 1.0,12.35 35.7,16.35"
-  "warehouse 4.93,9.46 80.84,75.84"
-  "warehouse2 5.29,5.89 119.19,76.02"
-)
-for q in "${QUERIES[@]}"; do
+source "$HERE/polygon-queries.sh"
+for q in "${POLYGON_QUERIES[@]}"; do
   read -r world start goal <<<"$q"
   echo "== $world" >&2
   SEL=(--map "$SHARED/polygons/$world.geojson" --start "$start" --goal "$goal")

@@ -59,21 +59,6 @@ std::vector<Station> Stations(const Path& path, int k) {
   return stations;
 }
 
-Point2 PointAt(const Path& path, double s, size_t& segment) {
-  double walked = 0.0;
-  for (size_t i = 0; i + 1 < path.size(); ++i) {
-    const double length = (path[i + 1] - path[i]).head<2>().norm();
-    if (walked + length >= s || i + 2 == path.size()) {
-      segment = i;
-      const double t = length > 0 ? std::clamp((s - walked) / length, 0.0, 1.0) : 0.0;
-      return path[i].head<2>() + t * (path[i + 1] - path[i]).head<2>();
-    }
-    walked += length;
-  }
-  segment = 0;
-  return path.front().head<2>();
-}
-
 double FieldCell(const Map& map) {
   if (const OccupancyGrid* grid = map.grid()) return grid->resolution();
   return map.world()->distance_field().cell_size();
@@ -110,13 +95,12 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
       const double before = stations[i].s - (i > 0 ? stations[i - 1].s : 0.0);
       const double after =
           (i + 1 < stations.size() ? stations[i + 1].s : seed.length) - stations[i].s;
-      size_t segment = 0;
-      const Point2 p = PointAt(seed.path, stations[i].s, segment);
+      const PathPosition at = PositionAt(seed.path, stations[i].s);
       const Point2 normal = stations[i].vertex > 0 ? VertexNormal(seed.path, stations[i].vertex)
-                                                   : SegmentNormal(seed.path, segment);
+                                                   : SegmentNormal(seed.path, at.segment);
       const double reach = std::max(before + after, 4.0 * cell);
       ControlPoint c;
-      c.section = SectionAt(*checker, p, normal, problem.clearance, reach, 0.05 * cell);
+      c.section = SectionAt(*checker, at.point, normal, problem.clearance, reach, 0.05 * cell);
       c.tangent = Point2(normal.y(), -normal.x());
       c.along = 0.5 * std::min(before, after);
       points.push_back(c);

@@ -54,24 +54,17 @@ Point2 VertexNormal(const Path& path, size_t i) {
   return LeftNormal(UnitOr(in + out, in));
 }
 
-double PathLength2d(const Path& path) {
-  double length = 0.0;
-  for (size_t i = 1; i < path.size(); ++i) length += (path[i] - path[i - 1]).head<2>().norm();
-  return length;
-}
-
-PathPosition PositionAt(const Path& path, double fraction) {
+PathPosition PositionAt(const Path& path, double s) {
   PathPosition position;
   if (path.empty()) return position;
   position.point = path.front().head<2>();
-  const double target = std::clamp(fraction, 0.0, 1.0) * PathLength2d(path);
   double walked = 0.0;
   for (size_t i = 0; i + 1 < path.size(); ++i) {
     const Point2 a = path[i].head<2>(), b = path[i + 1].head<2>();
     const double segment = (b - a).norm();
     position.segment = i;
-    if (walked + segment >= target || i + 2 == path.size()) {
-      const double t = segment > 0 ? std::clamp((target - walked) / segment, 0.0, 1.0) : 0.0;
+    if (walked + segment >= s || i + 2 == path.size()) {
+      const double t = segment > 0 ? std::clamp((s - walked) / segment, 0.0, 1.0) : 0.0;
       position.point = a + t * (b - a);
       return position;
     }

@@ -32,13 +32,12 @@ CorridorSection SectionAt(const CollisionChecker& checker, const Point2& point,
 Point2 SegmentNormal(const Path& path, size_t i);
 Point2 VertexNormal(const Path& path, size_t i);
 
-// The point at arc length fraction `fraction` (0..1) of `path`, and the index of its segment.
+// The point at arc length `s` along `path` (clamped to the path; horizontal length), and the
+// index of its segment.
 struct PathPosition {
   Point2 point = Point2::Zero();
   size_t segment = 0;
 };
-PathPosition PositionAt(const Path& path, double fraction);
-
-double PathLength2d(const Path& path);
+PathPosition PositionAt(const Path& path, double s);
 
 }  // namespace swarmplan

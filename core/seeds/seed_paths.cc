@@ -11,6 +11,7 @@
 #include "core/algorithms/exact/exact_planners.h"
 #include "core/algorithms/exact/terrain_lattice_planner.h"
 #include "core/geometry/collision.h"
+#include "core/path_metrics.h"
 #include "core/seeds/corridor.h"
 
 namespace swarmplan {
@@ -86,7 +87,7 @@ absl::StatusOr<MapPtr> WithWalls(const Map& original, const std::vector<Wall>& w
 // The wall across `path` at `fraction` of its length, from obstacle to obstacle.
 Wall WallAcross(const CollisionChecker& checker, const Map& map, const Path& path, double fraction,
                 double clearance) {
-  const PathPosition at = PositionAt(path, fraction);
+  const PathPosition at = PositionAt(path, fraction * PathLength(path));
   const Point2 normal = SegmentNormal(path, at.segment);
   const double cap = Diagonal(map);
   const double tolerance = 1e-3 * cap;
@@ -124,7 +125,7 @@ absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int 
       break;
     }
     if (!found->found || found->path.size() < 2) break;
-    seeds.push_back({found->path, PathLength2d(found->path)});
+    seeds.push_back({found->path, PathLength(found->path)});
     if (static_cast<int>(seeds.size()) == count) break;
 
     // Cut the new seed's corridor; the walls stay where the endpoints keep their clearance.

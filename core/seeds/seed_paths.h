@@ -15,7 +15,7 @@ inline constexpr int kMaxSeedPaths = 8;
 // A collision-free path from the problem's start to its goal, exactly, keeping its clearance.
 struct SeedPath {
   Path path;
-  double length = 0.0;  // world units, horizontal on terrain
+  double length = 0.0;  // PathLength, world units
 };
 
 // Up to `count` seed paths in distinct corridors (homotopy classes), shortest first: the exact

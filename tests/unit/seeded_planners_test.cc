@@ -16,32 +16,18 @@
 #include "gtest/gtest.h"
 #include "tests/unit/contract_checks.h"
 #include "tests/unit/plan_test_support.h"
+#include "tests/unit/seed_test_maps.h"
 #include "tests/unit/test_support.h"
 
 namespace swarmplan {
 namespace {
 
+using seed_testing::BlockWorld;
+using seed_testing::Clearance;
+using seed_testing::CrossingX;
+using seed_testing::TwoDoorGrid;
+
 const std::vector<std::string> kSeededPlanners = {"bso", "aem-bso", "aem-bso-linear", "pso", "ba"};
-
-MapPtr TwoDoorGrid() {
-  std::vector<int8_t> cells(40 * 30, OccupancyGrid::kFree);
-  for (int x = 0; x < 40; ++x) {
-    if ((x >= 4 && x < 8) || (x >= 30 && x < 34)) continue;
-    cells[15 * 40 + x] = OccupancyGrid::kOccupied;
-  }
-  return std::make_shared<const Map>(Map::Data(*OccupancyGrid::Create(40, 30, std::move(cells))));
-}
-
-MapPtr BlockWorld() {
-  Polygon block{{{10, 12}, {30, 12}, {30, 18}, {10, 18}}};
-  return std::make_shared<const Map>(
-      Map::Data(*ShapeWorld::Create({{0, 0}, {40, 30}}, {}, {block})));
-}
-
-double Clearance(const Map& map, const Path& path) {
-  if (const OccupancyGrid* grid = map.grid()) return contract::GridPathClearance(*grid, path);
-  return contract::WorldPathClearance(*map.world(), path);
-}
 
 absl::StatusOr<PlanResult> Plan(const std::string& algorithm, const MapPtr& map,
                                 const Point2& start, const Point2& goal, int iterations,
@@ -57,6 +43,17 @@ absl::StatusOr<PlanResult> Plan(const std::string& algorithm, const MapPtr& map,
   request.problem.seed = 11;
   testing::NullObserver observer;
   return RunPlan(DefaultRegistry(), request, StopToken(), observer);
+}
+
+// A plan across TwoDoorGrid, from below the wall to above it.
+PlanRequest TwoDoorRequest(const std::string& algorithm, int iterations) {
+  PlanRequest request;
+  request.algorithm = algorithm;
+  request.problem.map = TwoDoorGrid();
+  request.problem.start = Point3(20.5, 5.5, 0);
+  request.problem.goal = Point3(20.5, 25.5, 0);
+  request.problem.limits.max_iterations = iterations;
+  return request;
 }
 
 void ExpectGoodPath(const std::string& algorithm, const MapPtr& map, const Point2& start,
@@ -115,13 +112,8 @@ TEST(SeededPlannersTest, FindNearOptimalPathsOnMovingAiMaps) {
 TEST(SeededPlannersTest, PreferredClearanceMovesThePathOffTheWalls) {
   for (const std::string& algorithm : kSeededPlanners) {
     SCOPED_TRACE(algorithm);
-    PlanRequest request;
-    request.algorithm = algorithm;
-    request.problem.map = TwoDoorGrid();
-    request.problem.start = Point3(20.5, 5.5, 0);
-    request.problem.goal = Point3(20.5, 25.5, 0);
+    PlanRequest request = TwoDoorRequest(algorithm, 150);
     request.problem.fleet.preferred_clearance = 1.5;
-    request.problem.limits.max_iterations = 150;
     request.problem.seed = 3;
     testing::NullObserver observer;
     absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, StopToken(), observer);
@@ -133,26 +125,11 @@ TEST(SeededPlannersTest, PreferredClearanceMovesThePathOffTheWalls) {
   }
 }
 
-// Where the path crosses the wall row of TwoDoorGrid.
-double DoorOf(const Path& path) {
-  for (size_t i = 0; i + 1 < path.size(); ++i) {
-    const double y0 = path[i].y(), y1 = path[i + 1].y();
-    if (y0 <= 15.5 && y1 > 15.5)
-      return path[i].x() + (15.5 - y0) / (y1 - y0) * (path[i + 1].x() - path[i].x());
-  }
-  return -1;
-}
-
 TEST(SeededPlannersTest, AlternativesTakeTheOtherCorridors) {
   for (const std::string& algorithm : kSeededPlanners) {
     SCOPED_TRACE(algorithm);
-    PlanRequest request;
-    request.algorithm = algorithm;
-    request.problem.map = TwoDoorGrid();
-    request.problem.start = Point3(20.5, 5.5, 0);
-    request.problem.goal = Point3(20.5, 25.5, 0);
+    PlanRequest request = TwoDoorRequest(algorithm, 40);
     request.problem.alternatives = 3;
-    request.problem.limits.max_iterations = 40;
     testing::NullObserver observer;
     absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, StopToken(), observer);
     ASSERT_TRUE(result.ok()) << result.status();
@@ -164,18 +141,14 @@ TEST(SeededPlannersTest, AlternativesTakeTheOtherCorridors) {
     EXPECT_GT(Clearance(*request.problem.map, other.path), 0.0);
     EXPECT_TRUE(other.metrics.collision_free);
     EXPECT_GE(other.fitness, result->fitness);
-    const double mine = DoorOf(result->raw_path), theirs = DoorOf(other.path);
+    const double mine = CrossingX(result->raw_path, 15.5), theirs = CrossingX(other.path, 15.5);
     EXPECT_TRUE((mine >= 30 && mine <= 34 && theirs >= 4 && theirs <= 8)) << mine << " " << theirs;
   }
   // Without the request there are none; the count is bounded.
   absl::StatusOr<PlanResult> plain = Plan("aem-bso", TwoDoorGrid(), {20.5, 5.5}, {20.5, 25.5}, 10);
   ASSERT_TRUE(plain.ok());
   EXPECT_TRUE(plain->alternatives.empty());
-  PlanRequest too_many;
-  too_many.algorithm = "aem-bso";
-  too_many.problem.map = TwoDoorGrid();
-  too_many.problem.start = Point3(20.5, 5.5, 0);
-  too_many.problem.goal = Point3(20.5, 25.5, 0);
+  PlanRequest too_many = TwoDoorRequest("aem-bso", 10);
   too_many.problem.alternatives = kMaxAlternatives + 1;
   EXPECT_EQ(ValidatePlanRequest(DefaultRegistry(), too_many).code(),
             absl::StatusCode::kInvalidArgument);
