@@ -16,12 +16,16 @@ namespace {
 
 using C = BezierConstants;
 
+}  // namespace
+
 double HalfHeadingChange(const Point2& u1, const Point2& u2) {
   // u1 points back along the incoming line, u2 along the outgoing one: the interior angle is
   // acos(u1·u2) and the heading change its supplement.
   const double cos_interior = std::clamp(u1.dot(u2), -1.0, 1.0);
   return 0.5 * (M_PI - std::acos(cos_interior));
 }
+
+namespace {
 
 void AppendCurve(const Point2 p[4], bool reversed, int samples, Path& out) {
   for (int i = 0; i <= samples; ++i) {
@@ -34,14 +38,14 @@ void AppendCurve(const Point2 p[4], bool reversed, int samples, Path& out) {
   }
 }
 
+}  // namespace
+
 Path CornerPolyline(const BezierCorner& c, int samples) {
   Path out;
   AppendCurve(c.b, false, samples, out);
   AppendCurve(c.e, true, samples, out);
   return out;
 }
-
-}  // namespace
 
 BezierOptions DefaultBezierOptions(const Map& map, double clearance) {
   BezierOptions options;

@@ -31,12 +31,17 @@ struct BezierCorner {
   double max_curvature = 0.0;  // κ_max of this corner
 };
 
+// Half the heading change at a corner, u1 the unit vector back along the incoming line and u2
+// the one along the outgoing line.
+double HalfHeadingChange(const Point2& u1, const Point2& u2);
 // The corner at W with neighbours prev and next, at distance d along both lines.
 BezierCorner MakeBezierCorner(const Point2& prev, const Point2& w, const Point2& next, double d);
 // κ_max for a corner of half heading change β at distance d.
 double BezierCornerCurvature(double beta, double d);
 // The d that gives curvature κ at a corner of half heading change β.
 double BezierDistanceForCurvature(double beta, double curvature);
+// The corner's two curves as one polyline, `samples` chords per curve, from B0 to E0.
+Path CornerPolyline(const BezierCorner& c, int samples);
 // A point of the cubic Bezier with control points p[0..3], s in [0, 1].
 Point2 CubicBezierPoint(const Point2 p[4], double s);
 // Signed curvature of that cubic at s.

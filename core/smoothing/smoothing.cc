@@ -7,6 +7,7 @@
 #include "absl/strings/str_join.h"
 #include "core/geometry/collision.h"
 #include "core/smoothing/bezier.h"
+#include "core/smoothing/bounded_curvature.h"
 #include "core/smoothing/cubic_spline.h"
 
 namespace swarmplan {
@@ -25,10 +26,12 @@ double SplineSpacing(const Map& map) {
 
 }  // namespace
 
-std::vector<std::string> SmoothingMethods() { return {"none", "cubic-spline", "bezier"}; }
+std::vector<std::string> SmoothingMethods() {
+  return {"none", "cubic-spline", "bezier", "bounded-curvature"};
+}
 
 absl::StatusOr<SmoothingResult> Smooth(const std::string& method, const Map& map, const Path& raw,
-                                       double clearance) {
+                                       double clearance, double turning_radius) {
   SmoothingResult result;
   if (method == "none" || method.empty()) {
     result.path = raw;
@@ -47,6 +50,16 @@ absl::StatusOr<SmoothingResult> Smooth(const std::string& method, const Map& map
     result.path =
         SmoothWithBezier(raw, DefaultBezierOptions(map, clearance), MakeCollisionChecker(map).get())
             .path;
+  } else if (method == "bounded-curvature") {
+    if (map.is_3d()) {
+      return absl::InvalidArgumentError("smoothing: 'bounded-curvature' smooths planar paths only");
+    }
+    BoundedCurvatureOptions options;
+    options.clearance = clearance;
+    options.turning_radius = turning_radius > 0
+                                 ? turning_radius
+                                 : DefaultBezierOptions(map, clearance).min_turning_radius;
+    result.path = SmoothToTurningRadius(raw, options, *MakeCollisionChecker(map)).path;
   } else {
     return absl::InvalidArgumentError(
         absl::StrCat("smoothing: unknown method '", method,

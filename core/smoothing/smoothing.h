@@ -19,7 +19,9 @@ std::vector<std::string> SmoothingMethods();
 
 // Smooths a raw path. INVALID_ARGUMENT for an unknown method. The result is checked for
 // collisions with `clearance` and says whether smoothing kept the path collision-free.
+// "bounded-curvature" (SmoothToTurningRadius) keeps the curvature within 1 / `turning_radius`,
+// or, with a turning radius of 0, within the one "bezier" uses (DefaultBezierOptions).
 absl::StatusOr<SmoothingResult> Smooth(const std::string& method, const Map& map, const Path& raw,
-                                       double clearance);
+                                       double clearance, double turning_radius = 0.0);
 
 }  // namespace swarmplan

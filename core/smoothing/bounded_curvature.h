@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/geometry/collision.h"
+#include "core/map/point.h"
+
+namespace swarmplan {
+
+struct BoundedCurvatureOptions {
+  double turning_radius = 1.0;  // world units: no curve turns tighter than this
+  double clearance = 0.0;       // every point of the result keeps it
+  int samples_per_curve = 16;   // chords per cubic in the output polyline
+};
+
+struct BoundedCurvatureResult {
+  Path path;                   // the smoothed polyline (z = 0)
+  double max_curvature = 0.0;  // the largest analytic curvature of the corners' curves
+  int corners = 0;             // corners of the simplified path that got a curve
+  int corners_over = 0;        // corners that had no room or clearance for 1 / radius
+  bool collision_free = false;
+};
+
+// Smooths a 2D path into straight lines joined by continuous-curvature Bezier corners (bezier.h)
+// whose curvature peaks at 1 / turning radius, keeping the clearance:
+// 1. SimplifyWithin the path at a tolerance of 0.05 turning radii (then 0.1, 0.2, ... 1.6 when
+//    the corners do not fit), so a densely sampled path becomes its few real corners;
+// 2. neighbouring corners that turn the same way and need more room than the segment between
+//    them become one corner where their outer lines meet;
+// 3. a corner whose curve comes closer than the clearance to an obstacle moves outward along
+//    its bisector (its curve moves with it), when its two lines stay clear;
+// 4. a corner still without room or clearance gets a shorter curve, turning tighter than
+//    1 / radius (counted in corners_over), or stays sharp.
+// The first tolerance with every corner at 1 / radius and the whole path clear is the result;
+// otherwise the clear one with the fewest corners over. The corners are designed for a radius 1 %
+// larger, so the sampled polyline's discrete curvature stays within 1 / radius.
+BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
+                                             const BoundedCurvatureOptions& options,
+                                             const CollisionChecker& checker);
+
+}  // namespace swarmplan

@@ -1,0 +1,121 @@
+#include "core/smoothing/bounded_curvature.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "core/geometry/collision.h"
+#include "core/map/map.h"
+#include "core/path_metrics.h"
+#include "core/smoothing/cubic_spline.h"
+#include "core/smoothing/smoothing.h"
+#include "tests/unit/seed_test_maps.h"
+
+namespace swarmplan {
+namespace {
+
+// The largest curvature of the circle through each three consecutive points.
+double LargestMengerCurvature(const Path& path) {
+  double largest = 0.0;
+  for (size_t i = 1; i + 1 < path.size(); ++i) {
+    const Point2 a = path[i - 1].head<2>(), b = path[i].head<2>(), c = path[i + 1].head<2>();
+    const double twice_area = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    const double product = (b - a).norm() * (c - b).norm() * (c - a).norm();
+    if (product > 0) largest = std::max(largest, 2.0 * twice_area / product);
+  }
+  return largest;
+}
+
+MapPtr EmptyWorld() {
+  return std::make_shared<const Map>(Map::Data(*ShapeWorld::Create({{0, 0}, {40, 30}}, {}, {})));
+}
+
+void ExpectSmoothedPath(const Map& map, const Path& raw, const BoundedCurvatureResult& r,
+                        double radius, double clearance) {
+  ASSERT_GE(r.path.size(), 2u);
+  EXPECT_EQ(r.path.front(), raw.front());
+  EXPECT_EQ(r.path.back(), raw.back());
+  EXPECT_TRUE(r.collision_free);
+  EXPECT_GE(seed_testing::Clearance(map, r.path), clearance - 1e-9);
+  EXPECT_LE(LargestMengerCurvature(r.path), 1.0 / radius);
+  EXPECT_EQ(r.corners_over, 0);
+}
+
+TEST(BoundedCurvatureTest, RoundsTheCornersAroundABlockOutsideTheClearance) {
+  const MapPtr map = seed_testing::BlockWorld();
+  const auto checker = MakeCollisionChecker(*map);
+  // Around the block's lower side at exactly the clearance: a curve inside either bend would
+  // come too close, so the corners have to move out.
+  const Path raw{{5, 15, 0}, {9.5, 11.5, 0}, {30.5, 11.5, 0}, {35, 15, 0}};
+  ASSERT_TRUE(checker->PathFree(raw, 0.5));
+  BoundedCurvatureOptions options;
+  options.turning_radius = 2.0;
+  options.clearance = 0.5;
+  const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
+  ExpectSmoothedPath(*map, raw, r, 2.0, 0.5);
+  EXPECT_EQ(r.corners, 2);
+  EXPECT_LE(r.max_curvature, 0.5);
+  EXPECT_LT(PathLength(r.path), 1.05 * PathLength(raw));
+}
+
+TEST(BoundedCurvatureTest, JoinsTwoCrowdedCornersTurningTheSameWay) {
+  const MapPtr map = EmptyWorld();
+  const auto checker = MakeCollisionChecker(*map);
+  // Two 45-degree turns 0.7 apart: neither has room for a radius of 3 on its own.
+  const Path raw{{2, 2, 0}, {20, 2, 0}, {20.5, 2.5, 0}, {20.5, 25, 0}};
+  BoundedCurvatureOptions options;
+  options.turning_radius = 3.0;
+  const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
+  ExpectSmoothedPath(*map, raw, r, 3.0, 0.0);
+  EXPECT_EQ(r.corners, 1);
+}
+
+TEST(BoundedCurvatureTest, ReducesADenselySampledCurveToItsFewCorners) {
+  const MapPtr map = EmptyWorld();
+  const auto checker = MakeCollisionChecker(*map);
+  // A spline through a zig-zag, sampled every 0.1: its own curvature is far above 1 / 2 at
+  // the knots.
+  CubicSpline spline;
+  spline.Fit({{2, 2, 0}, {12, 20, 0}, {22, 4, 0}, {36, 26, 0}}, SplineEnd::kNotAKnot);
+  Path raw;
+  spline.SampleBySpacing(0.1, raw);
+  ASSERT_GT(LargestMengerCurvature(raw), 0.5);
+  BoundedCurvatureOptions options;
+  options.turning_radius = 2.0;
+  const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
+  ExpectSmoothedPath(*map, raw, r, 2.0, 0.0);
+  EXPECT_LT(r.corners, 40);
+}
+
+TEST(BoundedCurvatureTest, ReportsCornersWithoutRoomInsteadOfHidingThem) {
+  const MapPtr map = EmptyWorld();
+  const auto checker = MakeCollisionChecker(*map);
+  // A hairpin 1 wide cannot turn with a radius of 5 and stays within 0.05 radii of a path that
+  // needs it: the result says so.
+  const Path raw{{2, 2, 0}, {30, 2, 0}, {30, 3, 0}, {2, 3, 0}};
+  BoundedCurvatureOptions options;
+  options.turning_radius = 5.0;
+  const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
+  EXPECT_TRUE(r.collision_free);
+  EXPECT_GT(r.corners_over, 0);
+  EXPECT_GT(r.max_curvature, 1.0 / 5.0);
+}
+
+TEST(BoundedCurvatureTest, IsTheSmoothingMethodThatTakesTheTurningRadius) {
+  const MapPtr map = seed_testing::TwoDoorGrid();
+  const Path raw{{35.5, 3.5, 0}, {31, 13.5, 0}, {31, 16.5, 0}, {2.5, 27.5, 0}};
+  const auto checker = MakeCollisionChecker(*map);
+  ASSERT_TRUE(checker->PathFree(raw, 0.5));
+  absl::StatusOr<SmoothingResult> smoothed = Smooth("bounded-curvature", *map, raw, 0.5, 2.0);
+  ASSERT_TRUE(smoothed.ok()) << smoothed.status();
+  EXPECT_TRUE(smoothed->collision_free);
+  EXPECT_GE(seed_testing::Clearance(*map, smoothed->path), 0.5 - 1e-9);
+  EXPECT_LE(LargestMengerCurvature(smoothed->path), 0.5);
+  EXPECT_LE(EvaluatePath(*map, smoothed->path, 0.5).max_curvature, 0.5);
+}
+
+}  // namespace
+}  // namespace swarmplan
