@@ -23,6 +23,24 @@ std::string PointLabel(const Point3& p, bool is_3d) {
   return absl::StrFormat("%g %g", p.x(), p.y());
 }
 
+// When the best so far first came within 1.05 and 1.02 of the optimum, from the plan's start.
+class QualityClock final : public Observer {
+ public:
+  QualityClock(absl::Time started, std::optional<double> optimal)
+      : started_(started), optimal_(optimal) {}
+  void OnIteration(const IterationStats& stats) override {
+    if (!optimal_ || !stats.feasible) return;
+    const double seconds = absl::ToDoubleSeconds(absl::Now() - started_);
+    if (!to_1_05 && stats.best_fitness <= 1.05 * *optimal_) to_1_05 = seconds;
+    if (!to_1_02 && stats.best_fitness <= 1.02 * *optimal_) to_1_02 = seconds;
+  }
+  std::optional<double> to_1_05, to_1_02;
+
+ private:
+  absl::Time started_;
+  std::optional<double> optimal_;
+};
+
 }  // namespace
 
 absl::StatusOr<std::vector<BenchProblem>> ScenarioProblems(const std::string& map_name,
@@ -204,8 +222,8 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   record.optimal = problem.optimal;
   record.scen_optimal = problem.scen_optimal;
 
-  NullObserver observer;
   const absl::Time started = absl::Now();
+  QualityClock observer(started, problem.optimal);
   absl::StatusOr<PlanResult> result = RunPlan(registry, request, StopToken(), observer);
   if (!result.ok()) {
     record.wall_seconds = absl::ToDoubleSeconds(absl::Now() - started);
@@ -235,6 +253,10 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   if (!result->convergence.empty())
     record.initial_fitness = result->convergence.front().best_fitness;
   record.best_iteration = result->best_iteration;
+  if (result->objective) record.objective = result->objective->Total();
+  if (result->seed_objective) record.seed_objective = result->seed_objective->Total();
+  record.seconds_to_1_05 = observer.to_1_05;
+  record.seconds_to_1_02 = observer.to_1_02;
   record.wall_seconds = absl::ToDoubleSeconds(result->wall_time);
   return record;
 }

@@ -50,7 +50,7 @@ std::string CsvField(const std::string& text) {
 std::string CsvHeader() {
   return "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
          "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,best_"
-         "iteration\n";
+         "iteration,objective,seed_objective,seconds_to_1.05,seconds_to_1.02\n";
 }
 
 std::string CsvRow(const RunRecord& r) {
@@ -72,6 +72,10 @@ std::string CsvRow(const RunRecord& r) {
       FormatOptional(r.fitness),
       FormatOptional(r.initial_fitness),
       absl::StrCat(r.best_iteration),
+      FormatOptional(r.objective),
+      FormatOptional(r.seed_objective),
+      FormatOptional(r.seconds_to_1_05),
+      FormatOptional(r.seconds_to_1_02),
   };
   return absl::StrCat(absl::StrJoin(fields, ","), "\n");
 }

@@ -28,6 +28,15 @@ struct RunRecord {
   std::optional<double> fitness;
   std::optional<double> initial_fitness;
   int best_iteration = 0;
+  // On 2D maps, the fleet objective's total for the final path and for the best seed after the
+  // same smoothing (PlanResult::objective, seed_objective).
+  std::optional<double> objective;
+  std::optional<double> seed_objective;
+  // Seconds from the start of the plan (seed paths included) to the first iteration whose best
+  // is collision-free and, by the planner's fitness, within 1.05 and 1.02 of the optimum (the
+  // fitness is the raw path's length when the objective has no preferences).
+  std::optional<double> seconds_to_1_05;
+  std::optional<double> seconds_to_1_02;
 };
 
 // length / optimal for a successful run with a known optimum; 1 when both are zero (start ==

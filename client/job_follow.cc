@@ -125,6 +125,16 @@ void PrintResultTable(const v1::PlanResult& result) {
         alternative.path_size(), alternative.metrics());
   }
   table.Print(std::cout);
+  if (!result.has_objective()) return;
+  Table objective({"OBJECTIVE", "TOTAL", "LENGTH", "CLEARANCE", "CURVATURE", "VIOLATION"});
+  auto add_terms = [&](const std::string& name, const v1::ObjectiveTerms& t) {
+    objective.AddRow({name, FormatNumber(t.total()), FormatNumber(t.length()),
+                      FormatNumber(t.clearance()), FormatNumber(t.curvature()),
+                      FormatNumber(t.violation())});
+  };
+  add_terms("path", result.objective());
+  if (result.has_seed_objective()) add_terms("best seed", result.seed_objective());
+  objective.Print(std::cout);
 }
 
 }  // namespace

@@ -44,6 +44,9 @@ struct SearchResult {
   int best_iteration = 0;  // iteration at which the final best was first reached
   StopReason stop_reason = StopReason::kNone;
   std::vector<IterationStats> convergence;
+  // The best seed path the search started from, when it had one (the seeded planners):
+  // RunPlan smooths and evaluates it beside the result.
+  Path seed_path;
   // Other collision-free paths, each in a corridor of its own and none in the path's, best
   // (lowest fitness) first; at most problem.alternatives - 1.
   struct Alternative {

@@ -5,6 +5,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "core/fitness/path_objective_terms.h"
 #include "core/geometry/collision.h"
 #include "core/random.h"
 #include "core/smoothing/smoothing.h"
@@ -128,11 +129,27 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
 
   const Map& map = *problem.map;
   if (!result.raw_path.empty()) {
-    absl::StatusOr<SmoothingResult> smoothed =
-        Smooth(result.smoothing, map, result.raw_path, problem.clearance);
+    absl::StatusOr<SmoothingResult> smoothed = Smooth(
+        result.smoothing, map, result.raw_path, problem.clearance, problem.fleet.turning_radius);
     if (!smoothed.ok()) return smoothed.status();
     result.smoothed_path = std::move(smoothed->path);
     result.smoothing_collision_free = smoothed->collision_free;
+  }
+  if (!map.is_3d() && result.found) {
+    const Path& final_path =
+        result.smoothing_collision_free ? result.smoothed_path : result.raw_path;
+    absl::StatusOr<FleetTerms> terms = EvaluateFleetObjective(problem, final_path);
+    if (!terms.ok()) return terms.status();
+    result.objective = *terms;
+  }
+  if (!map.is_3d() && !search->seed_path.empty()) {
+    absl::StatusOr<SmoothingResult> seed = Smooth(result.smoothing, map, search->seed_path,
+                                                  problem.clearance, problem.fleet.turning_radius);
+    if (!seed.ok()) return seed.status();
+    absl::StatusOr<FleetTerms> terms =
+        EvaluateFleetObjective(problem, seed->collision_free ? seed->path : search->seed_path);
+    if (!terms.ok()) return terms.status();
+    result.seed_objective = *terms;
   }
   for (SearchResult::Alternative& alternative : search->alternatives) {
     PlanResult::Alternative& out = result.alternatives.emplace_back();

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
+#include "core/fitness/fleet_objective.h"
 #include "core/optimum.h"
 #include "core/path_metrics.h"
 #include "core/planner.h"
@@ -40,6 +42,11 @@ struct PlanResult {
   uint64_t seed = 0;
   ParamValues resolved_params;
   std::vector<IterationStats> convergence;
+  // On 2D maps, each term of the problem's fleet objective for the final path (the smoothed
+  // one, or the raw one when smoothing lost the clearance), and for the best seed path the
+  // planner started from after the same smoothing, when it had one.
+  std::optional<FleetTerms> objective;
+  std::optional<FleetTerms> seed_objective;
   // The exact optimum of the problem and the final path's cost over the optimum's (PlanCost:
   // the length on 2D maps; of the smoothed path, or of the raw one when smoothing lost the
   // clearance; 0 when the optimum is not known or no path was found). RunPlan leaves them

@@ -132,6 +132,16 @@ const char* StopReasonId(StopReason reason) {
   return "none";
 }
 
+v1::ObjectiveTerms ToProto(const FleetTerms& t) {
+  v1::ObjectiveTerms out;
+  out.set_length(t.length);
+  out.set_clearance(t.clearance);
+  out.set_curvature(t.curvature);
+  out.set_violation(t.violation);
+  out.set_total(t.Total());
+  return out;
+}
+
 }  // namespace
 
 v1::PlanResult ToProto(const PlanResult& r) {
@@ -171,6 +181,8 @@ v1::PlanResult ToProto(const PlanResult& r) {
     alternative->set_fitness(a.fitness);
     if (r.optimum.known) alternative->set_optimality_ratio(a.optimality_ratio);
   }
+  if (r.objective) *out.mutable_objective() = ToProto(*r.objective);
+  if (r.seed_objective) *out.mutable_seed_objective() = ToProto(*r.seed_objective);
   return out;
 }
 

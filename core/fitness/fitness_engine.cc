@@ -143,8 +143,15 @@ Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double 
 
 Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
                                 FleetTerms* terms) {
-  const FleetObjective& f = *fleet_;
   const int n = static_cast<int>(points_x_.rows());
+  FleetTerms t = ClearanceTerms(x, y, n, length);
+  t.curvature = CurvatureTerm(x, y, segment_.data(), n);
+  if (terms != nullptr) *terms = t;
+  return {t.Total(), feasible_};
+}
+
+FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n, double length) {
+  const FleetObjective& f = *fleet_;
   const Point2 lo = proximity_.lower(), hi = proximity_.upper();
   // Pass 1: the clearance at every point and the shortfalls, each point weighted by half of
   // each segment beside it.
@@ -173,34 +180,71 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
       violation += std::max(0.0, -inside) * ds;
     }
   }
-  const bool feasible = !outside && obstacles == 0;
-  // Pass 2: the discrete curvature 2 tan(theta / 2) / mean segment at each interior point,
-  // theta its turn: exact on a circle sampled at equal chords, unbounded toward a reversal.
-  double excess = 0.0;
-  if (f.turning_radius > 0) {
-    const double max_curvature = 1.0 / f.turning_radius;
-    for (int i = 1; i + 1 < n; ++i) {
-      const double before = segment_[i - 1], after = segment_[i];
-      const double ux = x[i] - x[i - 1], uy = y[i] - y[i - 1];
-      const double vx = x[i + 1] - x[i], vy = y[i + 1] - y[i];
-      const double cross = std::abs(ux * vy - uy * vx);
-      const double denominator = (before * after + ux * vx + uy * vy) * (before + after);
-      double curvature = 0.0;
-      if (denominator > 0) {
-        curvature = 4.0 * cross / denominator;
-      } else if (before * after > 0) {
-        curvature = kReversalCurvature;
-      }
-      excess += std::max(0.0, curvature - max_curvature) * 0.5 * (before + after);
-    }
-  }
+  feasible_ = !outside && obstacles == 0;
   FleetTerms t;
   t.length = length;
   t.clearance = f.preferred_clearance > 0 ? f.clearance_weight * shortfall : 0.0;
-  t.curvature = f.curvature_weight * excess;
   t.violation = f.violation_weight * violation;
-  if (terms != nullptr) *terms = t;
-  return {t.Total(), feasible};
+  return t;
+}
+
+double FitnessEngine::CurvatureTerm(const double* x, const double* y, const double* segment,
+                                    int n) const {
+  const FleetObjective& f = *fleet_;
+  if (f.turning_radius <= 0) return 0.0;
+  // The discrete curvature 2 tan(theta / 2) / mean segment at each interior point, theta its
+  // turn: exact on a circle sampled at equal chords, unbounded toward a reversal.
+  const double max_curvature = 1.0 / f.turning_radius;
+  double excess = 0.0;
+  for (int i = 1; i + 1 < n; ++i) {
+    const double before = segment[i - 1], after = segment[i];
+    const double ux = x[i] - x[i - 1], uy = y[i] - y[i - 1];
+    const double vx = x[i + 1] - x[i], vy = y[i + 1] - y[i];
+    const double cross = std::abs(ux * vy - uy * vx);
+    const double denominator = (before * after + ux * vx + uy * vy) * (before + after);
+    double curvature = 0.0;
+    if (denominator > 0) {
+      curvature = 4.0 * cross / denominator;
+    } else if (before * after > 0) {
+      curvature = kReversalCurvature;
+    }
+    excess += std::max(0.0, curvature - max_curvature) * 0.5 * (before + after);
+  }
+  return f.curvature_weight * excess;
+}
+
+FleetTerms FitnessEngine::PathTerms(const Path& path) {
+  if (path.size() < 2) return {};
+  // The clearance terms at points at most half a field cell apart, the path's vertices among
+  // them; the curvature at the path's own vertices.
+  const double spacing = 0.5 * field_->cell_size();
+  std::vector<double> x, y, vertex_x, vertex_y, vertex_segment;
+  for (size_t i = 0; i < path.size(); ++i) {
+    vertex_x.push_back(path[i].x());
+    vertex_y.push_back(path[i].y());
+    if (i + 1 == path.size()) break;
+    const Point3 step = path[i + 1] - path[i];
+    vertex_segment.push_back(step.head<2>().norm());
+    const int pieces = std::max(1, static_cast<int>(std::ceil(vertex_segment.back() / spacing)));
+    for (int j = 0; j < pieces; ++j) {
+      x.push_back(path[i].x() + step.x() * j / pieces);
+      y.push_back(path[i].y() + step.y() * j / pieces);
+    }
+  }
+  x.push_back(path.back().x());
+  y.push_back(path.back().y());
+  const int n = static_cast<int>(x.size());
+  if (segment_.size() < x.size()) segment_.resize(x.size());
+  if (clearance_.size() < x.size()) clearance_.resize(x.size());
+  double length = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    segment_[i] = std::hypot(x[i + 1] - x[i], y[i + 1] - y[i]);
+    length += segment_[i];
+  }
+  FleetTerms terms = ClearanceTerms(x.data(), y.data(), n, length);
+  terms.curvature = CurvatureTerm(vertex_x.data(), vertex_y.data(), vertex_segment.data(),
+                                  static_cast<int>(vertex_x.size()));
+  return terms;
 }
 
 }  // namespace swarmplan

@@ -51,6 +51,9 @@ class FitnessEngine {
   Evaluation Evaluate(const Eigen::VectorXd& x);
   // The fleet objective's terms for x (the engine must have been created with a fleet).
   FleetTerms Terms(const Eigen::VectorXd& x);
+  // The fleet objective's terms for any path (fleet engines only): the clearance terms read at
+  // points every half field cell along it, the curvature at its own vertices.
+  FleetTerms PathTerms(const Path& path);
   // The path x stands for, exactly as evaluated.
   void Decode(const Eigen::VectorXd& x, Path& path) const;
 
@@ -63,6 +66,11 @@ class FitnessEngine {
   Evaluation EvaluatePath(int column, FleetTerms* terms);
   Evaluation PaperPenalty(const double* x, const double* y, double length);
   Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms);
+  // Length, clearance and violation terms of the n points (segment_ holds their segments); sets
+  // feasible_.
+  FleetTerms ClearanceTerms(const double* x, const double* y, int n, double length);
+  // The weighted curvature excess of the n points with the given segment lengths.
+  double CurvatureTerm(const double* x, const double* y, const double* segment, int n) const;
 
   MapPtr map_;  // keeps the map, which the proximity and the field point into, alive
   int waypoints_;
@@ -80,6 +88,7 @@ class FitnessEngine {
   Eigen::MatrixXd points_x_, points_y_;               // (points) x (batch) buffers
   std::vector<double> segment_;                       // segment lengths of one path
   std::vector<double> clearance_;                     // the field at its points (fleet objective)
+  bool feasible_ = false;                             // of the last ClearanceTerms
 };
 
 }  // namespace swarmplan

@@ -91,6 +91,7 @@ absl::StatusOr<SearchResult> PathSearchPlanner::Solve(const Problem& problem, co
   if (!outcome.ok()) return outcome.status();
 
   SearchResult result;
+  if (known) result.seed_path = known->path;
   result.fitness = outcome->best_fitness;
   result.iterations = outcome->iterations;
   result.evaluations = outcome->evaluations;

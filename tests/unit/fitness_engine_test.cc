@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fitness/path_objective_terms.h"
 #include "core/fitness/reference_objective.h"
 #include "core/geometry/primitives.h"
 #include "core/geometry/rasterize.h"
@@ -315,6 +316,40 @@ TEST(FleetObjectiveTest, RejectsBadWeights) {
   absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(OpenProblem(0), options);
   ASSERT_FALSE(engine.ok());
   EXPECT_NE(engine.status().message().find("clearance_weight"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swarmplan
+
+namespace swarmplan {
+namespace {
+
+TEST(FleetObjectiveTest, AnyPathIsReadAsTheEngineReadsItsOwn) {
+  Problem problem = OpenProblem(0.5);
+  problem.fleet = FleetObjective{.preferred_clearance = 3.0, .turning_radius = 4.0};
+  WaypointFitnessOptions options;
+  options.waypoints = 1;
+  options.samples = 400;
+  options.fleet = problem.fleet;
+  FitnessEngine engine = *FitnessEngine::Create(problem, options);
+  for (const Eigen::Vector2d& waypoint : {Eigen::Vector2d(50, 58), Eigen::Vector2d(50, 50)}) {
+    Path path;
+    engine.Decode(waypoint, path);
+    const FleetTerms own = engine.Terms(waypoint);
+    const absl::StatusOr<FleetTerms> any = EvaluateFleetObjective(problem, path);
+    ASSERT_TRUE(any.ok()) << any.status();
+    EXPECT_NEAR(any->length, own.length, 1e-9);
+    // The same points, and more where the samples are farther apart than half a field cell.
+    EXPECT_NEAR(any->clearance, own.clearance, 0.01 * own.clearance);
+    EXPECT_NEAR(any->curvature, own.curvature, 1e-9);
+    EXPECT_NEAR(any->violation, own.violation, 0.01 * own.violation);
+  }
+  // A corner: the clearance terms read between its two vertices too.
+  const absl::StatusOr<FleetTerms> corner =
+      EvaluateFleetObjective(problem, {{10, 50, 0}, {50, 50, 0}, {90, 50, 0}});
+  ASSERT_TRUE(corner.ok());
+  EXPECT_GT(corner->violation, 0.0);
+  EXPECT_FALSE(EvaluateFleetObjective(Problem{}, {}).ok());
 }
 
 }  // namespace
