@@ -11,9 +11,11 @@ namespace swarmplan {
 // Any-angle shortening by line of sight, shared by every grid planner.
 
 // Greedy string pulling: from each kept point, the path goes straight to the last later point
-// it sees (the segment keeps the problem's clearance on its own map, exact checker), then the
-// collinear points are dropped (PruneCollinear). Never longer than `path`; start and goal are
-// kept. nullopt when a segment of `path` itself is not collision-free.
+// it sees (the segment keeps the problem's clearance on its own map, exact checker); then each
+// kept interior point moves to the corner of its grid cell that shortens the path most where
+// both its segments stay free (grid paths bend at cell corners, not at centres), the string is
+// pulled again and collinear points are dropped (PruneCollinear). Never longer than `path`;
+// start and goal are kept. nullopt when a segment of `path` itself is not collision-free.
 std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path);
 
 // ShortcutPath of the cell path's world path (GridSpace::WorldPath); consecutive cells need not
