@@ -159,7 +159,9 @@ PlanSpec BpsoSpec(int iterations, double swarm_factor, double mutation, bool dou
 PlanSpec GaSpec(int generations) {
   PlanSpec spec;
   spec.algorithm = "ga";
-  spec.params = {{"generations", static_cast<int64_t>(generations)}, {"resolution", kGaResolution}};
+  spec.params = {{"init", std::string("paper")},
+                 {"generations", static_cast<int64_t>(generations)},
+                 {"resolution", kGaResolution}};
   return spec;
 }
 

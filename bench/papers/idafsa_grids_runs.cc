@@ -27,6 +27,7 @@ absl::Status Prefixed(const std::string& what, const absl::Status& status) {
 ParamValues PaperFishParams(const FishConfig& config, const IdafsaGridWorld& world,
                             int max_generations) {
   ParamValues params = {
+      {"init", std::string("paper")},
       {"population", int64_t{50}},
       {"try_number", int64_t{8}},
       {"max_generations", int64_t{max_generations}},

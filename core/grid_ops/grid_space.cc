@@ -212,6 +212,10 @@ bool GridSpace::PathFree(const Path& world_path) const {
   return checker_->PathFree(world_path, clearance_);
 }
 
+bool GridSpace::SegmentFree(const Point3& a, const Point3& b) const {
+  return checker_->SegmentFree(a, b, clearance_);
+}
+
 void SetGridPath(const GridSpace& space, const std::vector<Cell>& cells, double fitness,
                  SearchResult& result) {
   result.fitness = fitness;

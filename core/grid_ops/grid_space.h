@@ -35,6 +35,10 @@ class GridSpace {
   double PathLength(const std::vector<Cell>& cells) const;
   // Whether WorldPath(cells) keeps the clearance on the problem's own map (exact checker).
   bool PathFree(const Path& world_path) const;
+  // Whether the straight segment between two world points keeps the clearance (exact checker).
+  bool SegmentFree(const Point3& a, const Point3& b) const;
+  // The centre of a cell in world coordinates, z = 0.
+  Point3 Centre(Cell c) const;
 
  private:
   friend absl::StatusOr<GridSpace> MakeGridSpace(const Problem& problem, double resolution);
@@ -45,7 +49,6 @@ class GridSpace {
     bool replace_goal = false;
   };
   Ends EndsOf(const std::vector<Cell>& cells) const;
-  Point3 Centre(Cell c) const;
   // Whether the segment from the start point to the centre of `next` (from the centre of
   // `previous` to the goal point) is collision-free.
   bool StartSegmentFree(Cell next) const;

@@ -29,22 +29,26 @@ std::vector<ParamSpec> WaypointParams(int default_iterations, int default_waypoi
   return specs;
 }
 
-std::vector<ParamSpec> WaypointSeedingParams() {
+std::vector<ParamSpec> SeedingParams(const std::string& seeded_meaning,
+                                     const std::string& paper_meaning) {
   std::vector<ParamSpec> specs;
-  specs.push_back(
-      ParamSpec::Enum("init", "seeded", {"seeded", "paper"},
-                      "seeded: the swarm moves the control points of exact seed paths (one per "
-                      "seed vertex and segment, at most 64) within their corridors and minimises "
-                      "the fleet objective (length, preferred clearance, turning radius); it "
-                      "never returns a path worse than its best seed. paper: the paper's "
-                      "initialisation over the whole map, `waypoints` waypoints, fitness "
-                      "L (1 + M xi)")
-          .Ours());
+  specs.push_back(ParamSpec::Enum("init", "seeded", {"seeded", "paper"},
+                                  "seeded: " + seeded_meaning + ". paper: " + paper_meaning)
+                      .Ours());
   specs.push_back(ParamSpec::Int("seeds", 3, 1, kMaxSeedPaths, "",
                                  "init=seeded: seed paths in distinct corridors, the exact "
                                  "optimum first; the population is spread over them")
                       .Ours());
   return specs;
+}
+
+std::vector<ParamSpec> WaypointSeedingParams() {
+  return SeedingParams(
+      "the swarm moves the control points of exact seed paths (one per seed vertex and segment, "
+      "at most 64) within their corridors and minimises the fleet objective (length, preferred "
+      "clearance, turning radius); it never returns a path worse than its best seed",
+      "the paper's initialisation over the whole map, `waypoints` waypoints, fitness "
+      "L (1 + M xi)");
 }
 
 WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {

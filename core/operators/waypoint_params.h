@@ -22,7 +22,11 @@ struct WaypointSeeding {
   bool seeded = true;
   int seeds = 3;
 };
-// `init` and `seeds`, for the planners that offer both initialisations.
+// `init` and `seeds`, for the planners that offer both initialisations; `seeded_meaning` and
+// `paper_meaning` say what each initialisation does in that planner.
+std::vector<ParamSpec> SeedingParams(const std::string& seeded_meaning,
+                                     const std::string& paper_meaning);
+// SeedingParams for the waypoint planners.
 std::vector<ParamSpec> WaypointSeedingParams();
 // The paper's initialisation when the planner has no `init` parameter.
 WaypointSeeding WaypointSeedingFrom(const ParamSet& params);

@@ -8,6 +8,7 @@
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/grid_space.h"
+#include "core/grid_ops/shortcut.h"
 #include "core/random.h"
 
 namespace swarmplan {
@@ -19,6 +20,10 @@ struct Fish {
 };
 
 double Dist(Cell a, Cell b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// The paper's larger grid side, in cells: with init=seeded, visual and steps scale with the
+// grid's longer side over it.
+constexpr double kPaperGridSide = 20.0;
 
 class FishSwarmSearch {
  public:
@@ -32,12 +37,28 @@ class FishSwarmSearch {
     // Any loop-free path is shorter than this: unreached fish rank behind every arrival.
     unreached_offset_ = static_cast<double>(g.width()) * g.height() * g.resolution() * 3.0;
     dist_min_ = std::max(Dist(space.start, space.goal), 1e-9);
+    if (p.seeding.seeded) scale_ = std::max(1.0, std::max(g.width(), g.height()) / kPaperGridSide);
   }
 
-  SearchResult Run(const StopToken& stop, Observer& observer) {
+  absl::StatusOr<SearchResult> Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     fish_.assign(p_.population, Fish{space_.start, {space_.start}});
     best_fitness_ = Unreached(space_.start);
+    if (p_.seeding.seeded) {
+      absl::StatusOr<GridSeeds> seeds =
+          GridSeeds::Find(problem_, space_, moves_, p_.seeding.seeds, stop, &context_);
+      if (absl::IsNotFound(seeds.status())) return result;  // start and goal not connected
+      if (!seeds.ok()) return seeds.status();
+      seeds_ = *std::move(seeds);
+      best_fitness_ = seeds_->best_length();
+      const size_t per_seed =
+          (fish_.size() + seeds_->cell_paths().size() - 1) / seeds_->cell_paths().size();
+      for (size_t i = 0; i < fish_.size(); ++i) {
+        const std::vector<Cell>& seed = seeds_->ForMember(i);
+        const size_t rank = i / seeds_->cell_paths().size();
+        PlaceOnSeed(fish_[i], seed, (seed.size() - 1) * rank / per_seed);
+      }
+    }
     ConvergenceLog log(observer);
     int iteration = 0;
     bool done = false;
@@ -52,7 +73,8 @@ class FishSwarmSearch {
         sum += f;
         if (!p_.feasible_solutions && !best_cells_.empty()) done = true;
       }
-      log.Record(iteration, best_fitness_, sum / fish_.size(), evaluations_, !best_cells_.empty());
+      log.Record(iteration, best_fitness_, sum / fish_.size(), evaluations_,
+                 seeds_ || !best_cells_.empty());
       if (done) {
         ++iteration;
         break;
@@ -62,12 +84,37 @@ class FishSwarmSearch {
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
+    if (seeds_) {
+      if (seeds_->SetResult(space_, best_cells_, result)) result.best_iteration = 0;
+      return result;
+    }
     SetGridPath(space_, best_cells_, best_fitness_, result);
     if (best_cells_.empty()) result.fitness = best_fitness_;
     return result;
   }
 
  private:
+  // The fish at cell `index` of a seed's cell path, its trail the path up to there.
+  static void PlaceOnSeed(Fish& fish, const std::vector<Cell>& seed, size_t index) {
+    fish.trail.assign(seed.begin(), seed.begin() + index + 1);
+    fish.pos = seed[index];
+  }
+
+  // init=seeded: the cell a fish aims at when it swims straight toward `target`, at most `step`
+  // cells away; nullopt when that segment is not collision-free or the fish would not move.
+  std::optional<Cell> LineOfSightStep(Cell from, Cell target, double step) const {
+    Cell aim = target;
+    const double d = Dist(from, target);
+    if (d > step) {
+      const double t = step / d;
+      aim = Cell{from.x + static_cast<int>(std::lround((target.x - from.x) * t)),
+                 from.y + static_cast<int>(std::lround((target.y - from.y) * t))};
+    }
+    if (aim == from || !moves_.Usable(aim)) return std::nullopt;
+    if (!space_.SegmentFree(space_.Centre(from), space_.Centre(aim))) return std::nullopt;
+    return aim;
+  }
+
   double Food(Cell c) {
     ++evaluations_;
     return Dist(c, space_.goal);
@@ -85,15 +132,17 @@ class FishSwarmSearch {
   double Swim(size_t i, int iteration) {
     Fish& fish = fish_[i];
     const double y = Food(fish.pos);
-    double visual = p_.visual;
+    const double visual_max = p_.visual * scale_;
+    const double step_min = p_.step_min * scale_, step_max = p_.step_max * scale_;
+    double visual = visual_max;
     if (p_.dynamic_visual) {
       const double lambda = p_.feedback_gain * std::max(0.0, 1.0 - y / dist_min_);
-      visual = p_.visual * std::exp(-lambda * iteration / std::max(1, p_.max_generations));
+      visual = visual_max * std::exp(-lambda * iteration / std::max(1, p_.max_generations));
       // Never narrower than the smallest step (ours): a fish always sees where it can swim.
-      visual = std::max(visual, p_.step_min);
+      visual = std::max(visual, step_min);
     }
     double step = std::numeric_limits<double>::infinity();
-    if (p_.adaptive_step) step = (visual >= p_.step_max ? 2.0 : 1.0) * p_.step_min;
+    if (p_.adaptive_step) step = (visual >= step_max ? 2.0 : 1.0) * step_min;
 
     std::vector<Cell> allowed;
     for (const Cell& to : moves_.ValidMoves(fish.pos)) {
@@ -103,7 +152,11 @@ class FishSwarmSearch {
       std::optional<Cell> target = SocialTarget(i, y, visual);
       if (!target) target = PreyTarget(fish.pos, y, visual);
       Cell to = allowed[rng_.UniformInt(0, static_cast<int64_t>(allowed.size()) - 1)];
-      if (target) {
+      std::optional<Cell> straight;
+      if (target && seeds_) straight = LineOfSightStep(fish.pos, *target, std::min(step, visual));
+      if (straight) {
+        to = *straight;
+      } else if (target) {
         const double now = Dist(fish.pos, *target);
         std::vector<Cell> closer;
         for (const Cell& c : allowed) {
@@ -116,13 +169,14 @@ class FishSwarmSearch {
     }
     if (fish.pos == space_.goal) return Arrive(fish, iteration);
     const double f = Unreached(fish.pos);
-    if (best_cells_.empty()) Offer(f, iteration);
+    if (best_cells_.empty() && !seeds_) Offer(f, iteration);
     return f;
   }
 
   double Arrive(Fish& fish, int iteration) {
     std::vector<Cell> cells = fish.trail;
     RemoveLoops(cells);
+    if (seeds_) return ArriveSeeded(fish, std::move(cells), iteration);
     const double length = space_.PathLength(cells);
     if (p_.feasible_solutions) {
       if (best_cells_.empty() || length < best_fitness_ - 1e-12) best_cells_ = cells;
@@ -131,6 +185,27 @@ class FishSwarmSearch {
     } else if (best_cells_.empty()) {
       best_cells_ = cells;  // the first fish to reach the goal ends the search
       Offer(length, iteration);
+    }
+    return length;
+  }
+
+  // init=seeded: the trail is ranked by its any-angle length against the best arrival; a fish
+  // that records a solution restarts from a random place on a random seed.
+  double ArriveSeeded(Fish& fish, std::vector<Cell> cells, int iteration) {
+    const double length = AnyAngleLength(space_, cells);
+    if (p_.feasible_solutions || best_cells_.empty()) {
+      if (best_cells_.empty() || length < best_arrival_ - 1e-12) {
+        best_cells_ = std::move(cells);
+        best_arrival_ = length;
+      }
+      Offer(length, iteration);
+    }
+    if (p_.feasible_solutions) {
+      const int64_t count = static_cast<int64_t>(seeds_->cell_paths().size());
+      const std::vector<Cell>& seed =
+          seeds_->ForMember(static_cast<size_t>(rng_.UniformInt(0, count - 1)));
+      PlaceOnSeed(fish, seed,
+                  static_cast<size_t>(rng_.UniformInt(0, static_cast<int64_t>(seed.size()) - 1)));
     }
     return length;
   }
@@ -182,8 +257,12 @@ class FishSwarmSearch {
   const GridSpace& space_;
   GridMoves moves_;
   Rng rng_;
+  GridSearchContext context_;
+  std::optional<GridSeeds> seeds_;  // init=seeded
+  double scale_ = 1.0;              // of visual and steps
   std::vector<Fish> fish_;
   std::vector<Cell> best_cells_;
+  double best_arrival_ = 0.0;  // init=seeded: AnyAngleLength(best_cells_)
   double best_fitness_ = 0.0;
   int best_iteration_ = 0;
   int64_t evaluations_ = 0;
@@ -206,7 +285,12 @@ const char* NeighbourhoodName(Neighbourhood n) {
 PlannerInfo FishInfo(FishSwarmParams::Variant variant, std::string id, std::string description) {
   PlannerInfo info;
   info.id = std::move(id);
-  info.description = std::move(description);
+  info.description =
+      std::move(description) +
+      " init=seeded (the default): fish start spread along the seed paths' cells, visual and "
+      "steps scale with the grid (paper's values on a 20 x 20 grid), a fish swims straight to a "
+      "target in line of sight, trails are ranked by their any-angle length, and the result is "
+      "never longer than the best seed.";
   info.seed_paper = citations::kIdafsa;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
@@ -256,6 +340,7 @@ std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
   for (ParamSpec& spec : GridSpaceParamSpecs(/*with_corner_cutting=*/false)) {
     specs.push_back(std::move(spec));
   }
+  for (ParamSpec& spec : GridSeedingParams()) specs.push_back(std::move(spec));
   return specs;
 }
 
@@ -278,6 +363,7 @@ FishSwarmParams FishSwarmParams::From(const ParamSet& set) {
   p.step_max = set.Double("step_max");
   p.feedback_gain = set.Double("feedback_gain");
   p.resolution = set.Double("resolution");
+  p.seeding = GridSeedingFrom(set);
   return p;
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/grid_ops/grid_moves.h"
 #include "core/grid_ops/grid_planner.h"
+#include "core/grid_ops/grid_seeding.h"
 #include "core/params.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -24,6 +25,11 @@ namespace swarmplan {
 // better, uncrowded (n_f/N <= δ) place is in view, else prey (try_number random cells in view),
 // else a random move; stepping toward a target picks a random valid move that gets closer to
 // it. Valid moves per cell are computed once and shared by all fish.
+// init=seeded: fish start spread along the seeds' cell paths, their trails the seed up to there
+// (a fish that records a solution restarts the same way); visual and steps are in cells of a
+// 20 x 20 grid (the paper's larger) and scale with the grid's longer side; a fish whose target
+// is in line of sight (clipped to its step) swims straight to it; trails are ranked by their
+// any-angle length, and the result is never longer than the best seed.
 struct FishSwarmParams {
   Neighbourhood neighbourhood = Neighbourhood::k8;
   bool segment_check = false;
@@ -39,6 +45,7 @@ struct FishSwarmParams {
   double step_max = 2.8284271247461903;  // cells
   double feedback_gain = 17.0;           // m of eq 9 (17 on 10x10, 10 on 20x20)
   double resolution = 0.0;               // cell size on shape worlds; 0: automatic (ours)
+  GridSeeding seeding;
 
   enum class Variant { kAfsa, kDafsa, kIdafsa };
   static FishSwarmParams Defaults(Variant variant);

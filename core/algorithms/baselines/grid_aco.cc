@@ -5,8 +5,10 @@
 #include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/grid_moves.h"
+#include "core/grid_ops/grid_seeding.h"
 #include "core/grid_ops/grid_space.h"
 #include "core/grid_ops/roulette.h"
+#include "core/grid_ops/shortcut.h"
 #include "core/random.h"
 
 namespace swarmplan {
@@ -28,9 +30,26 @@ class GridAcoSearch {
     unreached_ = static_cast<double>(cell_count_) * g.resolution() * 3.0;
   }
 
-  SearchResult Run(const StopToken& stop, Observer& observer) {
+  absl::StatusOr<SearchResult> Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     best_length_ = unreached_;
+    double q = p_.q;
+    if (p_.seeding.seeded) {
+      absl::StatusOr<GridSeeds> seeds =
+          GridSeeds::Find(problem_, space_, moves_, p_.seeding.seeds, stop, &context_);
+      if (absl::IsNotFound(seeds.status())) return result;  // start and goal not connected
+      if (!seeds.ok()) return seeds.status();
+      seeds_ = *std::move(seeds);
+      q *= seeds_->best_length();
+      for (const std::vector<Cell>& cells : seeds_->cell_paths()) {
+        const double length = AnyAngleLength(space_, cells);
+        Deposit(cells, q / length);
+        if (length < best_length_ - 1e-12) {
+          best_length_ = length;
+          best_cells_ = cells;
+        }
+      }
+    }
     ConvergenceLog log(observer);
     int iteration = 0;
     std::vector<std::pair<std::vector<int>, double>> arrivals;  // move indices, length
@@ -46,7 +65,7 @@ class GridAcoSearch {
         std::vector<int> edges;
         ++evaluations_;
         if (Walk(cells, edges)) {
-          const double length = space_.PathLength(cells);
+          const double length = seeds_ ? AnyAngleLength(space_, cells) : space_.PathLength(cells);
           sum += length;
           arrivals.push_back({std::move(edges), length});
           if (length < best_length_ - 1e-12) {
@@ -60,19 +79,34 @@ class GridAcoSearch {
       }
       for (double& t : tau_) t *= 1.0 - p_.rho;
       for (const auto& [edges, length] : arrivals) {
-        for (int e : edges) tau_[e] += p_.q / length;
+        for (int e : edges) tau_[e] += q / length;
       }
-      log.Record(iteration, best_length_, sum / std::max(1, p_.ants), evaluations_,
-                 !best_cells_.empty());
+      log.Record(iteration, seeds_ ? seeds_->Incumbent(best_length_) : best_length_,
+                 sum / std::max(1, p_.ants), evaluations_, !best_cells_.empty());
     }
     result.iterations = iteration;
     result.evaluations = evaluations_;
     result.convergence = log.Take();
-    SetGridPath(space_, best_cells_, best_length_, result);
+    if (!seeds_) {
+      SetGridPath(space_, best_cells_, best_length_, result);
+    } else if (seeds_->SetResult(space_, best_cells_, result)) {
+      result.best_iteration = 0;
+    }
     return result;
   }
 
  private:
+  // Adds `amount` to the pheromone of every move of a cell path (moves between neighbours).
+  void Deposit(const std::vector<Cell>& cells, double amount) {
+    const std::vector<Cell>& offsets = MoveOffsets(Neighbourhood::k8);
+    for (size_t i = 1; i < cells.size(); ++i) {
+      const Cell d{cells[i].x - cells[i - 1].x, cells[i].y - cells[i - 1].y};
+      const auto it = std::find(offsets.begin(), offsets.end(), d);
+      if (it == offsets.end()) continue;
+      tau_[Index(cells[i - 1]) * 8 + static_cast<size_t>(it - offsets.begin())] += amount;
+    }
+  }
+
   size_t Index(Cell c) const { return static_cast<size_t>(c.y) * space_.grid->width() + c.x; }
 
   // One ant from start; false when it gets stuck.
@@ -112,6 +146,8 @@ class GridAcoSearch {
   const GridSpace& space_;
   GridMoves moves_;
   Rng rng_;
+  GridSearchContext context_;
+  std::optional<GridSeeds> seeds_;  // init=seeded
   size_t cell_count_ = 0;
   std::vector<double> tau_;
   std::vector<uint32_t> visited_;
@@ -136,6 +172,7 @@ std::vector<ParamSpec> GridAcoParams::Specs() {
       ParamSpec::Double("tau0", d.tau0, 1e-9, 1e9, "", "initial pheromone").Ours(),
   };
   for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  for (ParamSpec& spec : GridSeedingParams()) specs.push_back(std::move(spec));
   return specs;
 }
 
@@ -150,6 +187,7 @@ GridAcoParams GridAcoParams::From(const ParamSet& set) {
   p.tau0 = set.Double("tau0");
   p.allow_corner_cutting = set.Bool("allow_corner_cutting");
   p.resolution = set.Double("resolution");
+  p.seeding = GridSeedingFrom(set);
   return p;
 }
 
@@ -169,7 +207,10 @@ PlannerInfo GridAcoInfo() {
       "start without revisiting cells, choosing moves with probability ∝ τ^α η^β, η = 1/distance "
       "to the goal; stuck ants die; τ ← (1−ρ)τ plus Q/length on every arriving ant's moves. "
       "α = 1, β = 7, ρ = 0.3, Q = 1, 50 ants. Ours: pheromone on directed moves, τ0 = 1, 100 "
-      "iterations; before any ant arrives the streamed fitness is a bound on path lengths.";
+      "iterations; before any ant arrives the streamed fitness is a bound on path lengths. "
+      "init=seeded (the default): the seed paths' cells are iteration 0's arrivals, Q is "
+      "scaled by the best seed's length, paths are ranked by their any-angle length, never "
+      "longer than the best seed.";
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = GridAcoParams::Specs();

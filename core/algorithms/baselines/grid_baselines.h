@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/grid_ops/grid_planner.h"
+#include "core/grid_ops/grid_seeding.h"
 #include "core/params.h"
 #include "core/planner.h"
 #include "core/registry.h"
@@ -15,7 +16,8 @@ namespace swarmplan {
 
 // GA on cell paths: initial paths through random cells joined by A*; roulette selection on
 // 1/length; crossover at a shared cell; mutation re-routes a random sub-path through a random
-// nearby cell with A*; loops removed; the best individual survives.
+// nearby cell with A*; loops removed; the best individual survives. init=seeded: the initial
+// individuals are the seeds' cell paths, mutated once beyond the first of each seed.
 struct GridGaParams {
   int population = 50;                 // ours (the AS-BFO paper tuned but did not publish them)
   int generations = 100;               // ours
@@ -25,6 +27,7 @@ struct GridGaParams {
   int max_waypoints = 3;               // ours
   bool allow_corner_cutting = false;
   double resolution = 0.0;  // shape-world cell size; 0: automatic (ours)
+  GridSeeding seeding;
 
   static std::vector<ParamSpec> Specs();
   static GridGaParams From(const ParamSet& set);
@@ -38,6 +41,8 @@ using GridGaPlanner = GridPlanner<GridGaParams>;
 // Ant colony on the grid: each ant walks from the start without revisiting cells, choosing the
 // next cell with probability ∝ τ^α η^β, η = 1 / distance to the goal; ants that get stuck die.
 // Pheromone lives on directed moves: τ ← (1 − ρ)τ, then each arriving ant adds Q / length.
+// init=seeded: the seeds' cell paths are the arrivals of iteration 0 and Q is scaled by the best
+// seed's length (so a path as long as it adds Q per move, on every map size).
 struct GridAcoParams {
   int ants = 50;
   double alpha = 1.0;
@@ -48,6 +53,7 @@ struct GridAcoParams {
   double tau0 = 1.0;     // ours
   bool allow_corner_cutting = false;
   double resolution = 0.0;  // shape-world cell size; 0: automatic (ours)
+  GridSeeding seeding;
 
   static std::vector<ParamSpec> Specs();
   static GridAcoParams From(const ParamSet& set);

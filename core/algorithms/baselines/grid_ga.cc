@@ -5,8 +5,10 @@
 #include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
+#include "core/grid_ops/grid_seeding.h"
 #include "core/grid_ops/grid_space.h"
 #include "core/grid_ops/roulette.h"
+#include "core/grid_ops/shortcut.h"
 #include "core/random.h"
 
 namespace swarmplan {
@@ -29,7 +31,7 @@ class GridGaSearch {
                MoveRules{Neighbourhood::k8, !p.allow_corner_cutting, problem.clearance}),
         rng_(problem.seed) {}
 
-  SearchResult Run(const StopToken& stop, Observer& observer) {
+  absl::StatusOr<SearchResult> Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     reachable_ = ReachableCells(moves_, space_.start);
     const OccupancyGrid& grid = *space_.grid;
@@ -37,10 +39,22 @@ class GridGaSearch {
     for (const Cell& c : reachable_) in_reach_[Index(c)] = 1;
     if (!in_reach_[Index(space_.goal)]) return result;
 
+    if (p_.seeding.seeded) {
+      absl::StatusOr<GridSeeds> seeds =
+          GridSeeds::Find(problem_, space_, moves_, p_.seeding.seeds, stop, &context_);
+      if (!seeds.ok()) return seeds.status();
+      seeds_ = *std::move(seeds);
+    }
     std::vector<Individual> pop(p_.population);
-    for (Individual& ind : pop) {
-      ind.cells = *RandomFeasiblePath(moves_, space_.start, space_.goal, reachable_,
-                                      p_.max_waypoints, rng_, &context_);
+    for (size_t i = 0; i < pop.size(); ++i) {
+      Individual& ind = pop[i];
+      if (seeds_) {
+        ind.cells = seeds_->ForMember(i);
+        if (i >= seeds_->cell_paths().size()) Mutate(ind.cells);
+      } else {
+        ind.cells = *RandomFeasiblePath(moves_, space_.start, space_.goal, reachable_,
+                                        p_.max_waypoints, rng_, &context_);
+      }
       Evaluate(ind, 0);
     }
     ConvergenceLog log(observer);
@@ -66,13 +80,18 @@ class GridGaSearch {
       pop = std::move(next);
       double sum = 0.0;
       for (const Individual& ind : pop) sum += ind.length;
-      log.Record(generation, best_.length, sum / pop.size(), evaluations_, true);
+      log.Record(generation, seeds_ ? seeds_->Incumbent(best_.length) : best_.length,
+                 sum / pop.size(), evaluations_, true);
     }
     result.iterations = generation;
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
-    SetGridPath(space_, best_.cells, best_.length, result);
+    if (!seeds_) {
+      SetGridPath(space_, best_.cells, best_.length, result);
+    } else if (seeds_->SetResult(space_, best_.cells, result)) {
+      result.best_iteration = 0;
+    }
     return result;
   }
 
@@ -81,7 +100,7 @@ class GridGaSearch {
 
   void Evaluate(Individual& ind, int generation) {
     ++evaluations_;
-    ind.length = space_.PathLength(ind.cells);
+    ind.length = seeds_ ? AnyAngleLength(space_, ind.cells) : space_.PathLength(ind.cells);
     if (best_.cells.empty() || ind.length < best_.length - 1e-12) {
       best_ = ind;
       best_iteration_ = generation;
@@ -136,6 +155,7 @@ class GridGaSearch {
   GridSearchContext context_;
   std::vector<Cell> reachable_;
   std::vector<uint8_t> in_reach_;
+  std::optional<GridSeeds> seeds_;  // init=seeded
   Individual best_;
   int best_iteration_ = 0;
   int64_t evaluations_ = 0;
@@ -164,6 +184,7 @@ std::vector<ParamSpec> GridGaParams::Specs() {
           .Ours(),
   };
   for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  for (ParamSpec& spec : GridSeedingParams()) specs.push_back(std::move(spec));
   return specs;
 }
 
@@ -177,6 +198,7 @@ GridGaParams GridGaParams::From(const ParamSet& set) {
   p.max_waypoints = static_cast<int>(set.Int("max_waypoints"));
   p.allow_corner_cutting = set.Bool("allow_corner_cutting");
   p.resolution = set.Double("resolution");
+  p.seeding = GridSeedingFrom(set);
   return p;
 }
 
@@ -196,7 +218,8 @@ PlannerInfo GridGaInfo() {
       "baseline): initial paths through 1-3 random cells joined by A*, roulette selection on "
       "1/length, crossover at a shared cell, mutation re-routing a random sub-path through a "
       "nearby random cell with A*, loops removed, the best kept. Every parameter is ours: the "
-      "papers do not publish theirs.";
+      "papers do not publish theirs. init=seeded (the default): the initial paths are the seed "
+      "paths' cells, ranked by their any-angle length, never longer than the best seed.";
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = GridGaParams::Specs();

@@ -8,7 +8,9 @@
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
 #include "core/grid_ops/grid_moves.h"
+#include "core/grid_ops/grid_seeding.h"
 #include "core/grid_ops/grid_space.h"
+#include "core/grid_ops/shortcut.h"
 #include "core/random.h"
 
 namespace swarmplan {
@@ -40,7 +42,7 @@ class AsBfoSearch {
                MoveRules{Neighbourhood::k8, !p.allow_corner_cutting, problem.clearance}),
         rng_(problem.seed) {}
 
-  SearchResult Run(const StopToken& stop, Observer& observer) {
+  absl::StatusOr<SearchResult> Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     reachable_ = ReachableCells(moves_, space_.start);
     const OccupancyGrid& grid = *space_.grid;
@@ -48,8 +50,24 @@ class AsBfoSearch {
     for (const Cell& c : reachable_) in_reach_[Index(c)] = 1;
     if (!in_reach_[Index(space_.goal)]) return result;  // start and goal not connected
 
+    if (p_.seeding.seeded) {
+      absl::StatusOr<GridSeeds> seeds =
+          GridSeeds::Find(problem_, space_, moves_, p_.seeding.seeds, stop, &context_);
+      if (!seeds.ok()) return seeds.status();
+      seeds_ = *std::move(seeds);
+    }
     bacteria_.resize(p_.population);
-    for (Bacterium& b : bacteria_) Disperse(b, 0);
+    for (size_t i = 0; i < bacteria_.size(); ++i) {
+      Bacterium& b = bacteria_[i];
+      if (!seeds_) {
+        Disperse(b, 0);
+        continue;
+      }
+      b.cells = seeds_->ForMember(i);
+      b.cost = Evaluate(b.cells);
+      if (i >= seeds_->cell_paths().size()) Chemotaxis(b, 0);
+      Offer(b, 0);
+    }
 
     ConvergenceLog log(observer);
     int iteration = 0;
@@ -67,7 +85,8 @@ class AsBfoSearch {
             Chemotaxis(b, iteration);
             sum += b.cost;
           }
-          log.Record(iteration, best_.cost, sum / bacteria_.size(), evaluations_, true);
+          log.Record(iteration, seeds_ ? seeds_->Incumbent(best_.cost) : best_.cost,
+                     sum / bacteria_.size(), evaluations_, true);
           ++iteration;
         }
         if (!stopped_) Reproduce();
@@ -82,7 +101,11 @@ class AsBfoSearch {
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
-    SetGridPath(space_, best_.cells, best_.cost, result);
+    if (!seeds_) {
+      SetGridPath(space_, best_.cells, best_.cost, result);
+    } else if (seeds_->SetResult(space_, best_.cells, result)) {
+      result.best_iteration = 0;
+    }
     return result;
   }
 
@@ -92,7 +115,7 @@ class AsBfoSearch {
 
   double Evaluate(const std::vector<Cell>& cells) {
     ++evaluations_;
-    return space_.PathLength(cells);
+    return seeds_ ? AnyAngleLength(space_, cells) : space_.PathLength(cells);
   }
 
   void Offer(const Bacterium& b, int iteration) {
@@ -103,6 +126,12 @@ class AsBfoSearch {
   }
 
   void Disperse(Bacterium& b, int iteration) {
+    if (seeds_) {
+      const int64_t count = static_cast<int64_t>(seeds_->cell_paths().size());
+      b.cells = seeds_->ForMember(static_cast<size_t>(rng_.UniformInt(0, count - 1)));
+      b.cost = Evaluate(b.cells);
+      return;
+    }
     std::optional<std::vector<Cell>> path = RandomFeasiblePath(
         moves_, space_.start, space_.goal, reachable_, p_.max_waypoints, rng_, &context_);
     b.cells = path ? *std::move(path) : std::vector<Cell>{space_.start};
@@ -176,6 +205,7 @@ class AsBfoSearch {
   std::vector<Cell> reachable_;
   std::vector<uint8_t> in_reach_;
   std::vector<Bacterium> bacteria_;
+  std::optional<GridSeeds> seeds_;  // init=seeded
   Bacterium best_;
   int best_iteration_ = 0;
   int64_t evaluations_ = 0;
@@ -209,6 +239,7 @@ std::vector<ParamSpec> AsBfoParams::Specs() {
           .Ours(),
   };
   for (ParamSpec& spec : GridSpaceParamSpecs()) specs.push_back(std::move(spec));
+  for (ParamSpec& spec : GridSeedingParams()) specs.push_back(std::move(spec));
   return specs;
 }
 
@@ -224,6 +255,7 @@ AsBfoParams AsBfoParams::From(const ParamSet& set) {
   p.keep_worse_tumbles = set.Bool("keep_worse_tumbles");
   p.allow_corner_cutting = set.Bool("allow_corner_cutting");
   p.resolution = set.Double("resolution");
+  p.seeding = GridSeedingFrom(set);
   return p;
 }
 
@@ -245,7 +277,9 @@ PlannerInfo AsBfoInfo() {
       "accumulated length; elimination-dispersal redraws paths. One iteration is one chemotactic "
       "step of every bacterium (Nc*Nre*Ned in all). Ours: initial paths through 1-3 random cells "
       "joined by A*, Ns = 4, Ped = 0.25, tumbles kept even when worse (classic BFO), no "
-      "cell-to-cell term, shape worlds rasterised at `resolution`.";
+      "cell-to-cell term, shape worlds rasterised at `resolution`. init=seeded (the default): "
+      "bacteria start from the seed paths' cells and disperse back to them, health is the "
+      "any-angle length, and the result is never longer than the best seed.";
   info.seed_paper = citations::kAsBfo;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};

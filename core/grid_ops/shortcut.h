@@ -1,0 +1,30 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/grid_ops/grid_space.h"
+#include "core/map/point.h"
+
+namespace swarmplan {
+
+// Any-angle shortening by line of sight, shared by every grid planner.
+
+// Greedy string pulling: from each kept point, the path goes straight to the last later point
+// it sees (the segment keeps the problem's clearance on its own map, exact checker); then each
+// kept interior point moves to the corner of its grid cell that shortens the path most where
+// both its segments stay free (grid paths bend at cell corners, not at centres), the string is
+// pulled again and collinear points are dropped (PruneCollinear). Never longer than `path`;
+// start and goal are kept. nullopt when a segment of `path` itself is not collision-free.
+std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path);
+
+// ShortcutPath of the cell path's world path (GridSpace::WorldPath); consecutive cells need not
+// be neighbours (a line-of-sight move joins two cell centres). nullopt when `cells` is empty or
+// its world path is not collision-free.
+std::optional<Path> AnyAnglePath(const GridSpace& space, const std::vector<Cell>& cells);
+
+// Length of AnyAnglePath(space, cells): the fitness of a grid planner with init=seeded;
+// infinity when there is no such path.
+double AnyAngleLength(const GridSpace& space, const std::vector<Cell>& cells);
+
+}  // namespace swarmplan
