@@ -77,6 +77,7 @@ bool GridSeeds::SetResult(const GridSpace& space, const std::vector<Cell>& best_
   result.path = keep_seed ? best_path_ : *std::move(path);
   result.fitness = PathLength(result.path);
   result.found = space.PathFree(result.path);
+  result.seed_path = best_path_;
   return keep_seed;
 }
 

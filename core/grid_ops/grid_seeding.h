@@ -54,7 +54,8 @@ class GridSeeds {
   double Incumbent(double fitness) const { return fitness < best_length_ ? fitness : best_length_; }
 
   // The result's path is the shorter of AnyAnglePath(best_cells) and the best seed, its
-  // fitness that path's length, found when it is collision-free. True when the seed is kept.
+  // fitness that path's length, found when it is collision-free; its seed_path the best seed.
+  // True when the seed is kept.
   bool SetResult(const GridSpace& space, const std::vector<Cell>& best_cells,
                  SearchResult& result) const;
 
