@@ -3,8 +3,10 @@
 // exactly, keeps the clearance by a checker written for this test, is not shorter than the
 // exact optimum, the same seed gives the same path bit for bit, OnIteration comes once per
 // iteration with a non-increasing best, a tripped stop token ends the search within one
-// iteration, and a planner that finds nothing says so. Finding no path is allowed here; each
-// test prints which planners succeeded on its map so the gap stays visible.
+// iteration, and a planner that finds nothing says so. On the real 2D maps every planner that
+// starts from seed paths by default (`init=seeded`) must find a path, within 1.05 of the optimum
+// where the map asks for no clearance; the others may find none, and each test prints which
+// planners succeeded on its map so the gap stays visible.
 
 #include <cstdio>
 #include <functional>
@@ -95,6 +97,10 @@ std::vector<ContractMap> ContractMaps() {
                   [] { return LoadMapFile(testing::BenchmarksDir() + "/movingai/arena.map"); },
                   Point3(4.5, 20.5, 0), Point3(44.5, 30.5, 0), 0.0, nullptr});
   maps.push_back(
+      {"Berlin_0_256 (Moving AI)", "movingai/Berlin_0_256.map",
+       [] { return LoadMapFile(testing::BenchmarksDir() + "/movingai/Berlin_0_256.map"); },
+       Point3(10.5, 176.5, 0), Point3(254.5, 226.5, 0), 0.0, nullptr});
+  maps.push_back(
       {"parking1 (Bench-MR)", "polygons/parking1.geojson",
        [] { return LoadMapFile(testing::BenchmarksDir() + "/polygons/parking1.geojson"); },
        Point3(1.0, 7.2, 0), Point3(17.6, 7.2, 0), 0.1, nullptr});
@@ -129,6 +135,16 @@ std::vector<ContractMap> ContractMaps() {
 }
 
 class PlannerContractTest : public ::testing::TestWithParam<int> {};
+
+// The planner starts from seed paths unless asked otherwise.
+bool SeededByDefault(const PlannerInfo& info) {
+  for (const ParamSpec& spec : info.params) {
+    if (spec.name != "init") continue;
+    const std::string* value = std::get_if<std::string>(&spec.default_value);
+    return value != nullptr && *value == "seeded";
+  }
+  return false;
+}
 
 TEST_P(PlannerContractTest, EveryPlannerKeepsTheContract) {
   const ContractMap spec_given = ContractMaps()[GetParam()];
@@ -184,6 +200,11 @@ TEST_P(PlannerContractTest, EveryPlannerKeepsTheContract) {
     EXPECT_LE(result->iterations, kIterations);
 
     const Path& path = result->raw_path;
+    const bool must_succeed =
+        !spec.benchmark_file.empty() && map->kind() != MapKind::kTerrain && SeededByDefault(info);
+    if (must_succeed) {
+      EXPECT_TRUE(result->found) << "a seeded planner must find a path on a real map";
+    }
     if (!result->found) {
       EXPECT_TRUE(path.empty()) << "a planner that found nothing returns no path";
       table += "  " + info.id + ": no path\n";
@@ -200,6 +221,9 @@ TEST_P(PlannerContractTest, EveryPlannerKeepsTheContract) {
       // the continuous optimum from above: no length bound there.
       if (map->kind() != MapKind::kTerrain) {
         EXPECT_GE(length, optimum.length * (1 - 1e-9)) << "shorter than the exact optimum";
+      }
+      if (must_succeed && spec.clearance == 0.0) {
+        EXPECT_LE(length, 1.05 * optimum.length) << "a seeded planner far from the optimum";
       }
       char line[160];
       std::snprintf(line, sizeof line, "  %s: path, %.4f x the optimum, clearance %.3f\n",
