@@ -110,7 +110,7 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
                                    "(terrain: the lattice optimum alone)")
                         .Ours());
   }
-  specs.push_back(ParamSpec::Int("vertices_per_control", 4, 1, 100000, "",
+  specs.push_back(ParamSpec::Int("vertices_per_control", 8, 1, 100000, "",
                                  "init=seeded on terrain: the beetles move an offset profile along "
                                  "the lattice seed, one control point (dY, dZ) per this many of "
                                  "its vertices, linearly interpolated")
@@ -163,7 +163,7 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
 // How a BAS planner initialises: the waypoint planners' seeding (init, seeds) and on terrain
 // the spacing of the seed's offset profile.
 struct BasSeeding : WaypointSeeding {
-  int vertices_per_control = 4;
+  int vertices_per_control = 8;
 };
 
 BasSeeding PaperSeeding() {
@@ -311,7 +311,9 @@ constexpr char kModel[] =
     " On a terrain (world units; lengths given in cells are times the cell size s): one "
     "waypoint (Y, Z) per column, fitness sum(sqrt(s^2 + dY^2 + dZ^2) + Z) plus a penalty for "
     "flying below ground + clearance (ours), path rationality check (eqs 13-14), first path "
-    "drawn from the widening band C_ini (c' = 0.5 cells, ours). On 2D "
+    "drawn from the widening band C_ini (c' = 0.5 cells, ours): init=paper. init=seeded (the "
+    "default, ours): the beetles move an offset profile along the terrain-lattice optimum, "
+    "steps a fraction of the map, infeasible moves undone, never worse than the seed. On 2D "
     "maps: k = 2 waypoints joined by a cubic spline, fitness L (1 + M xi), optional PSO mix "
     "(eq 19).";
 
