@@ -92,16 +92,18 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
       ParamSpec::Enum(
           "init", "seeded", {"seeded", "paper"},
           v.aco_init
-              ? "seeded: the beetle starts from the terrain-lattice optimum (in place of the "
-                "ACO generation, so aco-bas is then bas), which is also the incumbent: the "
-                "result is never worse than it; steps are step_fraction of the map. paper: "
-                "the paper's ACO initial path and step0 in cells"
-              : "seeded: the beetles start from the exact optimum (on terrain the "
-                "terrain-lattice optimum put into columns; on 2D maps the control points of "
-                "`seeds` seed paths within their corridors under the fleet objective), which "
-                "is also the incumbent: the result is never worse than it; steps are "
-                "step_fraction of the map. paper: the paper's initial space C_ini (2D: "
-                "`waypoints` waypoints over the whole map) and step0 in cells")
+              ? "seeded: the beetle moves an offset profile along the terrain-lattice optimum "
+                "(in place of the ACO generation, so aco-bas is then bas; see "
+                "vertices_per_control), which is also the incumbent: the result is never worse "
+                "than it; steps are step_fraction of the map. paper: the paper's ACO initial "
+                "path and step0 in cells"
+              : "seeded: the beetles start from the exact optimum (on terrain they move an "
+                "offset profile along the terrain-lattice optimum, see vertices_per_control, "
+                "without the rationality check; on 2D maps the control points of `seeds` seed "
+                "paths within their corridors under the fleet objective), which is also the "
+                "incumbent: the result is never worse than it; steps are step_fraction of the "
+                "map. paper: the paper's one waypoint per column from C_ini (2D: `waypoints` "
+                "waypoints over the whole map) and step0 in cells")
           .Ours());
   if (!v.aco_init) {
     specs.push_back(ParamSpec::Int("seeds", 3, 1, kMaxSeedPaths, "",

@@ -24,9 +24,10 @@ namespace swarmplan {
 // infeasible draw.
 // Ours, both off by default (the paper's loop):
 //   relative_steps   step0 (so delta and d) is a fraction of each coordinate's range
-//                    (upper - lower: on terrain the map's extent in Y and its height range in
-//                    Z): the beetle moves by delta (upper - lower) o b. The direction b, the
-//                    vector to the best (eq 17) and the PSO term are taken in those units.
+//                    (upper - lower; the seeded terrain objective's box spans the map's extent
+//                    in Y and its height range in Z): the beetle moves by delta (upper - lower)
+//                    o b. The direction b, the vector to the best (eq 17) and the PSO term are
+//                    taken in those units.
 //   reject_infeasible a move (or a local fast search step) whose result is infeasible is
 //                    undone: the beetle stays where it was.
 struct BeetleAntennaeOptions {

@@ -21,7 +21,9 @@ namespace swarmplan {
 // included). With every offset 0 the path is the seed itself. A control point moves a run of
 // vertices together: the objective charges every change of height as well as the height, so a
 // vertex moved alone off a level stretch pays more in length than it gains, while a run lowered
-// together gains. The search space grows with the path, not with the map's resolution.
+// together gains. The search space grows with the path, not with the map's resolution. There
+// is no path rationality check (Repair): the offsets are continuous along the path by
+// construction.
 class SeededTerrainObjective final : public PathObjective {
  public:
   // `seed` joins the inner objective's start and goal.
