@@ -109,8 +109,12 @@ struct RowStats {
   std::vector<double> best_iteration;  // found paths: the iteration of the best (0: the first)
 };
 
+// The paper's initialisation and moves (init=paper, every move taken), passed explicitly: the
+// planners' defaults are the seeded service ones.
 ParamValues BeetleParams(int iterations) {
   return {{"iterations", int64_t{iterations}},
+          {"init", std::string("paper")},
+          {"reject_infeasible", false},
           {"step0", 8.0},
           {"step_decay", 0.998},
           {"c", 2.0},
@@ -336,7 +340,9 @@ absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options) {
       "of its end), in grid units (= world units here). Absolute values depend on the map, so only "
       "rankings and ratios "
       "can be compared with the paper.\n",
-      "- **Paper's settings, passed explicitly** (they are also the planners' defaults): ",
+      "- **Paper's settings, passed explicitly**: `init=paper` (the paper's initial space C_ini or "
+      "ACO path, steps in cells) and `reject_infeasible=false` (every move taken; the planners' "
+      "defaults are the seeded service settings), ",
       full_iterations,
       " iterations, δ0 = 8, λ1 = 0.998, c = 2, θ0 = 21, λ2 = 0.998, ACO "
       "population 20 (also the one ACO generation that seeds ACO-BAS). Table B: population 5, ",

@@ -5,10 +5,12 @@
 #include <string>
 
 #include "core/algorithms/bas/beetle_antennae.h"
+#include "core/algorithms/bas/seeded_terrain_objective.h"
 #include "core/algorithms/bas/terrain_aco.h"
 #include "core/algorithms/bas/terrain_objective.h"
 #include "core/algorithms/citations.h"
 #include "core/operators/waypoint_params.h"
+#include "core/seeds/seed_paths.h"
 
 namespace swarmplan {
 namespace {
@@ -32,12 +34,13 @@ std::vector<ParamSpec> TerrainPenaltyParam() {
 }
 
 // The lengths the paper gives in cells (step, rationality step, band widening), in world units
-// on a terrain: times its cell size, so a terrain of unit cells runs the paper's numbers.
+// on a terrain: times its cell size, so a terrain of unit cells runs the paper's numbers. A
+// relative step (init=seeded) is a fraction of the coordinates' ranges and stays as it is.
 BeetleAntennaeOptions InWorldUnits(BeetleAntennaeOptions options, const PathObjective& objective) {
   const auto* terrain = dynamic_cast<const TerrainObjective*>(&objective);
   if (terrain == nullptr) return options;
   const double cell = terrain->terrain().cell_size();
-  options.step0 *= cell;
+  if (!options.relative_steps) options.step0 *= cell;
   options.theta0 *= cell;
   options.band_step *= cell;
   return options;
@@ -85,8 +88,48 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
     specs.push_back(
         ParamSpec::Int("population", v.population, 1, 10000, "", "beetles").PopulationSize());
   }
+  specs.push_back(
+      ParamSpec::Enum(
+          "init", "seeded", {"seeded", "paper"},
+          v.aco_init
+              ? "seeded: the beetle moves an offset profile along the terrain-lattice optimum "
+                "(in place of the ACO generation, so aco-bas is then bas; see "
+                "vertices_per_control), which is also the incumbent: the result is never worse "
+                "than it; steps are step_fraction of the map. paper: the paper's ACO initial "
+                "path and step0 in cells"
+              : "seeded: the beetles start from the exact optimum (on terrain they move an "
+                "offset profile along the terrain-lattice optimum, see vertices_per_control, "
+                "without the rationality check; on 2D maps the control points of `seeds` seed "
+                "paths within their corridors under the fleet objective), which is also the "
+                "incumbent: the result is never worse than it; steps are step_fraction of the "
+                "map. paper: the paper's one waypoint per column from C_ini (2D: `waypoints` "
+                "waypoints over the whole map) and step0 in cells")
+          .Ours());
+  if (!v.aco_init) {
+    specs.push_back(ParamSpec::Int("seeds", 3, 1, kMaxSeedPaths, "",
+                                   "init=seeded on 2D maps: seed paths in distinct corridors, "
+                                   "the exact optimum first; the beetles are spread over them "
+                                   "(terrain: the lattice optimum alone)")
+                        .Ours());
+  }
+  specs.push_back(ParamSpec::Int("vertices_per_control", 8, 1, 100000, "",
+                                 "init=seeded on terrain: the beetles move an offset profile along "
+                                 "the lattice seed, one control point (dY, dZ) per this many of "
+                                 "its vertices, linearly interpolated")
+                      .Ours());
+  specs.push_back(ParamSpec::Double("step_fraction", 0.003, 0.0, 1.0, "",
+                                    "init=seeded: initial step delta0 as a fraction of each "
+                                    "coordinate's range (terrain: the map's extent in Y, its "
+                                    "height range in Z), so the steps scale with the map")
+                      .Ours());
+  specs.push_back(ParamSpec::Bool("reject_infeasible", true,
+                                  "undo a move whose path is infeasible (below ground + "
+                                  "clearance, above the ceiling, or colliding): the beetle stays; "
+                                  "false: the paper's moves, which always step")
+                      .Ours());
   specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells",
-                                    "initial step delta0 (on a terrain: times its cell size)"));
+                                    "init=paper: initial step delta0 (on a terrain: times its "
+                                    "cell size)"));
   specs.push_back(ParamSpec::Double("step_decay", 0.998, 0.0, 1.0, "", "lambda1: delta decay"));
   specs.push_back(ParamSpec::Double("c", 2.0, 1e-9, 1e9, "", "antennae length d = delta / c"));
   specs.push_back(ParamSpec::Double("theta0", 21.0, 0.0, 1e9, "cells",
@@ -119,27 +162,57 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
   return specs;
 }
 
+// How a BAS planner initialises: the waypoint planners' seeding (init, seeds) and on terrain
+// the spacing of the seed's offset profile.
+struct BasSeeding : WaypointSeeding {
+  int vertices_per_control = 8;
+};
+
+BasSeeding PaperSeeding() {
+  BasSeeding seeding;
+  seeding.seeded = false;
+  return seeding;
+}
+
+// `seeding.seeded`: on terrain the objective is the offset profile along the lattice optimum
+// (SeededTerrainObjective), on 2D maps the seeded waypoint objective.
 PathSearchPlanner::ObjectiveFactory BasObjectiveFactory(
-    std::optional<WaypointFitnessOptions> waypoints, double terrain_penalty) {
-  return [waypoints, terrain_penalty](
-             const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
+    std::optional<WaypointFitnessOptions> waypoints, double terrain_penalty, BasSeeding seeding) {
+  return [waypoints, terrain_penalty,
+          seeding](const Problem& problem) -> absl::StatusOr<std::unique_ptr<PathObjective>> {
     if (problem.map != nullptr && problem.map->is_3d()) {
       absl::StatusOr<std::unique_ptr<TerrainObjective>> objective =
           TerrainObjective::Create(problem, terrain_penalty);
       if (!objective.ok()) return objective.status();
+      if (seeding.seeded) {
+        absl::StatusOr<std::vector<SeedPath>> seeds = FindSeedPaths(problem, 1, StopToken());
+        if (!seeds.ok()) return seeds.status();
+        if (seeds->empty()) {
+          return absl::NotFoundError("init=seeded: no lattice path from start to goal exists");
+        }
+        return std::unique_ptr<PathObjective>(std::make_unique<SeededTerrainObjective>(
+            std::move(*objective), std::move(seeds->front().path), seeding.vertices_per_control));
+      }
       return std::unique_ptr<PathObjective>(std::move(*objective));
     }
     if (!waypoints.has_value()) {
       return absl::InvalidArgumentError("this planner needs a terrain map");
     }
-    return WaypointObjectiveFactory(*waypoints, WaypointSeeding{false, 1})(problem);
+    return WaypointObjectiveFactory(*waypoints,
+                                    static_cast<const WaypointSeeding&>(seeding))(problem);
   };
 }
 
 std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& params) {
   BeetleAntennaeOptions options;
   options.population = static_cast<int>(IntOr(params, "population", 1));
-  options.step0 = params.Double("step0");
+  BasSeeding seeding;
+  seeding.seeded = params.Enum("init") == "seeded";
+  seeding.seeds = static_cast<int>(IntOr(params, "seeds", 1));
+  seeding.vertices_per_control = static_cast<int>(params.Int("vertices_per_control"));
+  options.relative_steps = seeding.seeded;
+  options.step0 = seeding.seeded ? params.Double("step_fraction") : params.Double("step0");
+  options.reject_infeasible = params.Bool("reject_infeasible");
   options.step_decay = params.Double("step_decay");
   options.c = params.Double("c");
   options.theta0 = params.Double("theta0");
@@ -159,9 +232,9 @@ std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& par
   std::optional<WaypointFitnessOptions> waypoints;
   if (!v.aco_init) waypoints = WaypointFitnessFrom(params);
   std::optional<TerrainAcoOptions> aco;
-  if (v.aco_init) aco = AcoOptionsFrom(params);
+  if (v.aco_init && !seeding.seeded) aco = AcoOptionsFrom(params);
   return std::make_unique<PathSearchPlanner>(
-      BasObjectiveFactory(waypoints, params.Double("terrain_penalty")),
+      BasObjectiveFactory(waypoints, params.Double("terrain_penalty"), seeding),
       [options, aco](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
                      Observer& observer) -> absl::StatusOr<SearchOutcome> {
         std::optional<Eigen::VectorXd> seed;
@@ -220,7 +293,7 @@ PlannerInfo TerrainAcoInfo() {
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     const TerrainAcoOptions aco = AcoOptionsFrom(params);
     return std::make_unique<PathSearchPlanner>(
-        BasObjectiveFactory(std::nullopt, params.Double("terrain_penalty")),
+        BasObjectiveFactory(std::nullopt, params.Double("terrain_penalty"), PaperSeeding()),
         [aco](PathObjective& objective, int t_max, Rng& rng, const StopToken& stop,
               Observer& observer) -> absl::StatusOr<SearchOutcome> {
           auto* terrain = dynamic_cast<TerrainObjective*>(&objective);
@@ -240,7 +313,9 @@ constexpr char kModel[] =
     " On a terrain (world units; lengths given in cells are times the cell size s): one "
     "waypoint (Y, Z) per column, fitness sum(sqrt(s^2 + dY^2 + dZ^2) + Z) plus a penalty for "
     "flying below ground + clearance (ours), path rationality check (eqs 13-14), first path "
-    "drawn from the widening band C_ini (c' = 0.5 cells, ours). On 2D "
+    "drawn from the widening band C_ini (c' = 0.5 cells, ours): init=paper. init=seeded (the "
+    "default, ours): the beetles move an offset profile along the terrain-lattice optimum, "
+    "steps a fraction of the map, infeasible moves undone, never worse than the seed. On 2D "
     "maps: k = 2 waypoints joined by a cubic spline, fitness L (1 + M xi), optional PSO mix "
     "(eq 19).";
 

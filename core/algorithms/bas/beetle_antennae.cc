@@ -45,10 +45,16 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
   std::vector<Eigen::VectorXd> x(n, Eigen::VectorXd(dim));
   std::vector<Eigen::VectorXd> last_good_dir(n, Eigen::VectorXd::Zero(dim));
   std::vector<double> f(n);
+  std::vector<Eigen::VectorXd> guesses;
+  if (seed.has_value()) {
+    guesses.push_back(*seed);
+  } else {
+    guesses = objective.InitialGuesses();
+  }
   for (int j = 0; j < n; ++j) {
     Evaluation e;
-    if (seed.has_value()) {
-      x[j] = *seed;
+    if (!guesses.empty()) {
+      x[j] = guesses[j % guesses.size()];
       objective.Clamp(x[j]);
       e = objective.Evaluate(x[j]);
       ++out.evaluations;
@@ -65,7 +71,14 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
 
   double delta = options.step0;
   double theta = options.theta0;
-  Eigen::VectorXd b(dim), b1(dim), scratch(dim), candidate(dim);
+  // World units per unit of b: the coordinates' ranges, or 1 (the paper's steps).
+  const Eigen::VectorXd scale = options.relative_steps
+                                    ? Eigen::VectorXd(objective.upper() - objective.lower())
+                                    : Eigen::VectorXd::Ones(dim);
+  // 1 / scale, 0 on a coordinate with no range (it never moves).
+  const Eigen::VectorXd inv_scale =
+      scale.unaryExpr([](double s) { return s > 0.0 ? 1.0 / s : 0.0; });
+  Eigen::VectorXd b(dim), b1(dim), w(dim), scratch(dim), candidate(dim), previous(dim);
 
   auto consider = [&](const Eigen::VectorXd& point, const Evaluation& e) {
     if (e.fitness >= out.best_fitness) return false;
@@ -79,14 +92,15 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
     double step = delta;
     for (int i = 0; i < options.lfs_steps; ++i) {
       b1 = rng.UnitDirection(dim);
-      const AntennaeProbe probe = ProbeAntennae(objective, out.best_x, b1, step, scratch);
+      w = scale.cwiseProduct(b1);
+      const AntennaeProbe probe = ProbeAntennae(objective, out.best_x, w, step, scratch);
       candidate = out.best_x;
-      AddAntennaeStep(probe, b1, step, candidate);
+      AddAntennaeStep(probe, w, step, candidate);
       objective.Clamp(candidate);
       objective.Repair(theta, candidate);
       const Evaluation e = objective.Evaluate(candidate);
       out.evaluations += 3;
-      consider(candidate, e);
+      if (e.feasible || !options.reject_infeasible) consider(candidate, e);
       step *= std::pow(options.lfs_lambda,
                        options.lfs_b / (options.lfs_a + options.lfs_gamma * i / options.lfs_steps));
     }
@@ -98,7 +112,7 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
       b1 = rng.UnitDirection(dim);
       b = options.eta1 * b1;
       if (options.eta2 != 0.0) {
-        Eigen::VectorXd to_best = out.best_x - x[j];
+        Eigen::VectorXd to_best = (out.best_x - x[j]).cwiseProduct(inv_scale);
         const double norm = to_best.norm();
         if (norm > 1e-12) b += (options.eta2 / norm) * to_best;
       }
@@ -106,17 +120,25 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
       Normalise(b, b1);
       if (options.pso_mix) {
         for (int k = 0; k < dim; ++k) {
-          b[k] = options.pso_m * b[k] + options.pso_c1 * (out.best_x[k] - x[j][k]) * rng.Uniform();
+          b[k] = options.pso_m * b[k] +
+                 options.pso_c1 * ((out.best_x[k] - x[j][k]) * inv_scale[k]) * rng.Uniform();
         }
         Normalise(b, b1);
       }
-      const AntennaeProbe probe = ProbeAntennae(objective, x[j], b, delta / options.c, scratch);
-      AddAntennaeStep(probe, b, delta, x[j]);
+      w = scale.cwiseProduct(b);
+      const AntennaeProbe probe = ProbeAntennae(objective, x[j], w, delta / options.c, scratch);
+      if (options.reject_infeasible) previous = x[j];
+      AddAntennaeStep(probe, w, delta, x[j]);
       last_good_dir[j] = probe.toward_right * b;
       objective.Clamp(x[j]);
       objective.Repair(theta, x[j]);
       const Evaluation e = objective.Evaluate(x[j]);
       out.evaluations += 3;
+      if (!e.feasible && options.reject_infeasible) {
+        x[j] = previous;  // f[j] is still its fitness
+        sum += f[j];
+        continue;
+      }
       f[j] = e.fitness;
       sum += e.fitness;
       if (consider(x[j], e) && options.lfs_steps > 0) local_fast_search();

@@ -18,8 +18,18 @@ namespace swarmplan {
 // (clamped), then objective.Repair(theta, x) (the path rationality check on terrain), then
 // evaluated; the best path is kept apart from the moving beetles. delta <- lambda1 delta and
 // theta <- lambda2 theta per iteration. Optional PSO mix (eq 19): b <- m b + c1 (x_best - x)
-// rand, renormalised. Beetles start from `seed` when given, else from the initial space C_ini:
-// a band around the straight path widened by band_step after every infeasible draw.
+// rand, renormalised. Beetles start from `seed` when given, else from the objective's initial
+// guesses (a seeded objective's seeds, beetle j from guess j mod their number), else from the
+// initial space C_ini: a band around the straight path widened by band_step after every
+// infeasible draw.
+// Ours, both off by default (the paper's loop):
+//   relative_steps   step0 (so delta and d) is a fraction of each coordinate's range
+//                    (upper - lower; the seeded terrain objective's box spans the map's extent
+//                    in Y and its height range in Z): the beetle moves by delta (upper - lower)
+//                    o b. The direction b, the vector to the best (eq 17) and the PSO term are
+//                    taken in those units.
+//   reject_infeasible a move (or a local fast search step) whose result is infeasible is
+//                    undone: the beetle stays where it was.
 struct BeetleAntennaeOptions {
   int population = 1;
   double step0 = 8.0;
@@ -40,6 +50,8 @@ struct BeetleAntennaeOptions {
   double pso_c1 = 1.5;
   double band_step = 0.5;
   int max_initial_draws = 200;
+  bool relative_steps = false;
+  bool reject_infeasible = false;
 };
 
 SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOptions& options,

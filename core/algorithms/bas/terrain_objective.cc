@@ -81,6 +81,16 @@ double TerrainObjective::SegmentViolation(const Point3& a, const Point3& b) cons
   return violation;
 }
 
+Evaluation TerrainObjective::EvaluatePath(const Path& path) const {
+  double fitness = 0.0;
+  double violation = 0.0;
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    fitness += TerrainSegmentCost(path[i], path[i + 1], terrain_.cell_size());
+    violation += SegmentViolation(path[i], path[i + 1]);
+  }
+  return {fitness + penalty_ * violation, violation == 0.0};
+}
+
 Evaluation TerrainObjective::Evaluate(const Eigen::VectorXd& x) {
   double fitness = 0.0;
   double violation = 0.0;

@@ -36,6 +36,10 @@ class TerrainObjective final : public PathObjective {
   // previous one takes the previous waypoint's Y and Z.
   void Repair(double theta, Eigen::VectorXd& x) const override;
 
+  // The fitness and feasibility of any polyline by this objective: its TerrainPathCost plus
+  // penalty times its violation, feasible when there is none.
+  Evaluation EvaluatePath(const Path& path) const;
+
   const Terrain& terrain() const { return terrain_; }
   int columns() const { return columns_; }
   // The world x of interior waypoint k (0-based).
