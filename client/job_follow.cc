@@ -126,6 +126,7 @@ void PrintResultTable(const v1::PlanResult& result) {
   }
   table.Print(std::cout);
   if (!result.has_objective()) return;
+  std::cout << "\n";
   Table objective({"OBJECTIVE", "TOTAL", "LENGTH", "CLEARANCE", "CURVATURE", "VIOLATION"});
   auto add_terms = [&](const std::string& name, const v1::ObjectiveTerms& t) {
     objective.AddRow({name, FormatNumber(t.total()), FormatNumber(t.length()),

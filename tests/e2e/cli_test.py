@@ -69,6 +69,18 @@ def close(point, expected, tolerance=1e-6):
             math.isclose(point.get("y", 0.0), expected[1], abs_tol=tolerance))
 
 
+def largest_curvature(points):
+    """The largest curvature of the circle through each three consecutive points."""
+    largest = 0.0
+    for (ax, ay), (bx, by), (cx, cy) in zip(points, points[1:], points[2:]):
+        twice_area = abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+        product = (math.hypot(bx - ax, by - ay) * math.hypot(cx - bx, cy - by) *
+                   math.hypot(cx - ax, cy - ay))
+        if product > 0:
+            largest = max(largest, 2 * twice_area / product)
+    return largest
+
+
 def pick_swarm_planner(algorithms):
     """A swarm planner (not an exact one) that plans on occupancy grids, if the server has one."""
     for algorithm in algorithms:
@@ -178,6 +190,28 @@ def main():
                       "plan with seed-paper planner %s reports its convergence" % swarm)
         else:
             print("note no seed-paper planner for grids is registered yet; planned with astar only")
+
+        # The fleet objective: a turning radius kept by bounded-curvature smoothing, each term of
+        # the objective reported for the path and for the best seed after the same smoothing.
+        fleet = cli.json("plan", grid_id, "--start", start, "--goal", goal, "--algorithm",
+                         "aem-bso", "--seed", "3", "--max-iterations", "30", "--clearance", "0.5",
+                         "--preferred-clearance", "1.5", "--turning-radius", "2", "--smoothing",
+                         "bounded-curvature", "--time-budget", "60s").get("result", {})
+        smoothed = [(p.get("x", 0.0), p.get("y", 0.0)) for p in fleet.get("smoothed_path", [])]
+        cli.check(fleet.get("found") and smoothed[:1] == [START] and smoothed[-1:] == [GOAL],
+                  "a fleet plan joins start and goal after bounded-curvature smoothing")
+        cli.check(largest_curvature(smoothed) <= 0.5 * (1 + 1e-9),
+                  "bounded-curvature smoothing keeps the curvature within 1 / turning radius")
+        for key in ("objective", "seed_objective"):
+            terms = fleet.get(key, {})
+            parts = sum(terms.get(k, 0.0) for k in ("length", "clearance", "curvature",
+                                                    "violation"))
+            cli.check(terms.get("length", 0.0) > 0 and
+                      math.isclose(terms.get("total", -1.0), parts, rel_tol=1e-9),
+                      "the result's %s lists its terms and their total" % key)
+        cli.check(fleet.get("objective", {}).get("total", 1e9) <=
+                  fleet.get("seed_objective", {}).get("total", 0.0) + 1e-9,
+                  "on the warehouse the fleet plan is no worse by its objective than its best seed")
 
         # Jobs.
         jobs = [j["id"] for j in cli.json("jobs", "list").get("jobs", [])]
