@@ -140,6 +140,8 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
   app.add_option("--smoothing", o.smoothing, "Smoothing applied to every path")
       ->check(CLI::IsMember(SmoothingMethods()));
   app.add_option("--csv", o.csv_path, "CSV output file (default: stdout)");
+  app.add_option("--convergence-csv", o.convergence_csv_path,
+                 "also write each run's best per iteration and its seconds to this CSV");
   app.add_option("--markdown", o.markdown_path, "Markdown summary file");
 
   try {

@@ -36,7 +36,8 @@ struct BenchOptions {
   double turning_radius = 0.0;
   double optimum_budget_seconds = 10.0;  // per problem, for the exact optimum; 0: none
   std::string smoothing = "none";
-  std::string csv_path;  // "" for stdout
+  std::string csv_path;              // "" for stdout
+  std::string convergence_csv_path;  // "" for none
   std::string markdown_path;
   bool list_planners = false;
 };

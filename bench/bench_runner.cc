@@ -23,18 +23,21 @@ std::string PointLabel(const Point3& p, bool is_3d) {
   return absl::StrFormat("%g %g", p.x(), p.y());
 }
 
-// When the best so far first came within 1.05 and 1.02 of the optimum, from the plan's start.
+// Each iteration's best and when, from the plan's start, it first came within 1.05 and 1.02 of
+// the optimum.
 class QualityClock final : public Observer {
  public:
   QualityClock(absl::Time started, std::optional<double> optimal)
       : started_(started), optimal_(optimal) {}
   void OnIteration(const IterationStats& stats) override {
-    if (!optimal_ || !stats.feasible) return;
     const double seconds = absl::ToDoubleSeconds(absl::Now() - started_);
+    progress.push_back({seconds, stats.best_fitness, stats.feasible});
+    if (!optimal_ || !stats.feasible) return;
     if (!to_1_05 && stats.best_fitness <= 1.05 * *optimal_) to_1_05 = seconds;
     if (!to_1_02 && stats.best_fitness <= 1.02 * *optimal_) to_1_02 = seconds;
   }
   std::optional<double> to_1_05, to_1_02;
+  std::vector<RunRecord::Progress> progress;
 
  private:
   absl::Time started_;
@@ -257,6 +260,7 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   if (result->seed_objective) record.seed_objective = result->seed_objective->Total();
   record.seconds_to_1_05 = observer.to_1_05;
   record.seconds_to_1_02 = observer.to_1_02;
+  record.convergence = std::move(observer.progress);
   record.wall_seconds = absl::ToDoubleSeconds(result->wall_time);
   return record;
 }

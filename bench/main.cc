@@ -63,14 +63,30 @@ int Main(int argc, char** argv) {
   std::ostream& csv = options.csv_path.empty() ? std::cout : csv_file;
   csv << CsvHeader() << std::flush;
 
+  std::ofstream convergence;
+  if (!options.convergence_csv_path.empty()) {
+    convergence.open(options.convergence_csv_path);
+    convergence << ConvergenceCsvHeader();
+    if (!convergence) {
+      std::cerr << "swarmplan-bench: error: cannot write " << options.convergence_csv_path << "\n";
+      return kExitFailure;
+    }
+  }
+
   std::vector<RunRecord> records;
   RunBench(
       registry, *problems, options, *params,
-      [&](const RunRecord& record) {
+      [&](RunRecord record) {
         csv << CsvRow(record) << std::flush;
-        records.push_back(record);
+        if (convergence.is_open()) convergence << ConvergenceCsvRows(record) << std::flush;
+        record.convergence.clear();
+        records.push_back(std::move(record));
       },
       std::cerr);
+  if (convergence.is_open() && !convergence) {
+    std::cerr << "swarmplan-bench: error: writing the convergence CSV failed\n";
+    return kExitFailure;
+  }
 
   int successes = 0;
   for (const RunRecord& r : records) successes += r.success ? 1 : 0;

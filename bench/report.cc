@@ -80,6 +80,21 @@ std::string CsvRow(const RunRecord& r) {
   return absl::StrCat(absl::StrJoin(fields, ","), "\n");
 }
 
+std::string ConvergenceCsvHeader() {
+  return "map,scenario,planner,seed,iteration,seconds,best_fitness,feasible\n";
+}
+
+std::string ConvergenceCsvRows(const RunRecord& r) {
+  std::string out;
+  for (size_t i = 0; i < r.convergence.size(); ++i) {
+    const RunRecord::Progress& p = r.convergence[i];
+    absl::StrAppend(&out, CsvField(r.map), ",", CsvField(r.scenario), ",", CsvField(r.planner), ",",
+                    r.seed, ",", i, ",", absl::StrFormat("%.6f", p.seconds), ",",
+                    FormatNumber(p.best_fitness), ",", p.feasible ? "true" : "false", "\n");
+  }
+  return out;
+}
+
 std::vector<SummaryRow> Summarize(const std::vector<RunRecord>& records) {
   struct Group {
     SummaryRow row;

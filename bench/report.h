@@ -37,7 +37,18 @@ struct RunRecord {
   // fitness is the raw path's length when the objective has no preferences).
   std::optional<double> seconds_to_1_05;
   std::optional<double> seconds_to_1_02;
+  // Each iteration's best so far, at its seconds from the plan's start.
+  struct Progress {
+    double seconds = 0.0;
+    double best_fitness = 0.0;
+    bool feasible = false;
+  };
+  std::vector<Progress> convergence;
 };
+
+// The convergence CSV (--convergence-csv): one row per iteration of each run.
+std::string ConvergenceCsvHeader();
+std::string ConvergenceCsvRows(const RunRecord& record);
 
 // length / optimal for a successful run with a known optimum; 1 when both are zero (start ==
 // goal), nullopt otherwise.

@@ -151,5 +151,16 @@ TEST(BenchReportTest, MarkdownSummaryTable) {
   EXPECT_EQ(MarkdownSummary({}), "");
 }
 
+TEST(BenchReportTest, ConvergenceCsvHasARowPerIteration) {
+  RunRecord r = Record("aem-bso", "arena.map", true, 12.5, 10.0, 0.5);
+  r.seed = 2;
+  r.convergence = {{0.125, 14.0, false}, {0.25, 12.5, true}};
+  EXPECT_EQ(ConvergenceCsvHeader(),
+            "map,scenario,planner,seed,iteration,seconds,best_fitness,feasible\n");
+  EXPECT_EQ(ConvergenceCsvRows(r),
+            "arena.map,0,aem-bso,2,0,0.125000,14,false\n"
+            "arena.map,0,aem-bso,2,1,0.250000,12.5,true\n");
+}
+
 }  // namespace
 }  // namespace swarmplan::bench

@@ -318,12 +318,6 @@ TEST(FleetObjectiveTest, RejectsBadWeights) {
   EXPECT_NE(engine.status().message().find("clearance_weight"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace swarmplan
-
-namespace swarmplan {
-namespace {
-
 TEST(FleetObjectiveTest, AnyPathIsReadAsTheEngineReadsItsOwn) {
   Problem problem = OpenProblem(0.5);
   problem.fleet = FleetObjective{.preferred_clearance = 3.0, .turning_radius = 4.0};
