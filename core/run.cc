@@ -150,6 +150,19 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
         EvaluateFleetObjective(problem, seed->collision_free ? seed->path : search->seed_path);
     if (!terms.ok()) return terms.status();
     result.seed_objective = *terms;
+    // A seeded plan is never worse than its best seed: when the seed, after the same smoothing,
+    // is better by the objective than the search's path after it, the seed is the result.
+    if (result.found && result.objective && seed->collision_free &&
+        terms->Total() < result.objective->Total()) {
+      absl::StatusOr<FleetTerms> raw = EvaluateFleetObjective(problem, search->seed_path);
+      if (!raw.ok()) return raw.status();
+      result.raw_path = search->seed_path;
+      result.smoothed_path = std::move(seed->path);
+      result.smoothing_collision_free = true;
+      result.objective = *terms;
+      result.fitness = raw->Total();
+      result.best_iteration = 0;
+    }
   }
   for (SearchResult::Alternative& alternative : search->alternatives) {
     PlanResult::Alternative& out = result.alternatives.emplace_back();
