@@ -1,9 +1,13 @@
 // Finished jobs live in the store: a bounded cache of them in memory, a cap on how many are
 // kept (--max-retained-jobs) beside the retention time, results identical from the cache, from
 // the store and after a restart.
+#include <sqlite3.h>
+
 #include <string>
 #include <vector>
 
+#include "absl/time/clock.h"
+#include "server/proto_convert.h"
 #include "tests/integration/test_server.h"
 
 namespace swarmplan::testing {
@@ -171,6 +175,51 @@ TEST(RetentionTest, PagesContinueAcrossJobsInTheStore) {
   EXPECT_EQ(pages, 3);
   ASSERT_EQ(listed.size(), jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i) EXPECT_EQ(listed[i], jobs[jobs.size() - 1 - i].id());
+}
+
+TEST(RetentionTest, JobsStoredBeforeTheClientRequestIdColumnAreServedAndDeduplicated) {
+  TempDir dir;
+  v1::Job old;
+  old.set_id("job-0123456789abcdef");
+  old.set_state(v1::JOB_STATE_SUCCEEDED);
+  *old.mutable_request() = TestServer::Request("map-gone", "astar", 5.5);
+  old.mutable_request()->set_client_request_id("order-old");
+  old.set_seed(99);
+  const absl::Time now = absl::Now();
+  *old.mutable_created_at() = server::ToProto(now - absl::Seconds(2));
+  *old.mutable_finished_at() = server::ToProto(now - absl::Seconds(1));
+  old.mutable_result()->set_found(true);
+  old.mutable_result()->set_fitness(5.0);
+  {
+    // The schema of the previous version: no client_request_id column.
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((dir.path() + "/swarmplan.db").c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db,
+                           "CREATE TABLE jobs (id TEXT PRIMARY KEY, state INTEGER NOT NULL, "
+                           "record BLOB NOT NULL, created_us INTEGER NOT NULL, finished_us "
+                           "INTEGER);",
+                           nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_stmt* insert = nullptr;
+    ASSERT_EQ(
+        sqlite3_prepare_v2(db, "INSERT INTO jobs VALUES (?, ?, ?, ?, ?)", -1, &insert, nullptr),
+        SQLITE_OK);
+    const std::string record = old.SerializeAsString();
+    sqlite3_bind_text(insert, 1, old.id().c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_int64(insert, 2, old.state());
+    sqlite3_bind_blob(insert, 3, record.data(), static_cast<int>(record.size()), SQLITE_TRANSIENT);
+    sqlite3_bind_int64(insert, 4, absl::ToUnixMicros(now - absl::Seconds(2)));
+    sqlite3_bind_int64(insert, 5, absl::ToUnixMicros(now - absl::Seconds(1)));
+    ASSERT_EQ(sqlite3_step(insert), SQLITE_DONE);
+    sqlite3_finalize(insert);
+    sqlite3_close(db);
+  }
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.job_cache_entries = 0;
+  TestServer server(dir.path(), config);
+  EXPECT_EQ(server.GetJob(old.id()).ShortDebugString(), old.ShortDebugString());
+  EXPECT_EQ(ListedIds(server), std::vector<std::string>{old.id()});
+  EXPECT_EQ(server.SubmitOk(old.request()).id(), old.id());
 }
 
 }  // namespace
