@@ -1,12 +1,16 @@
 #include "server/auth.h"
 
 #include <grpcpp/server_context.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "absl/status/status.h"
+#include "absl/strings/ascii.h"
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
 #include "absl/strings/strip.h"
 
 namespace swarmplan::server {
@@ -44,11 +48,35 @@ grpc::Status Authenticator::Check(const grpc::CallbackServerContext& context) co
     return grpc::Status(grpc::StatusCode::UNAUTHENTICATED,
                         "missing 'authorization: Bearer <token>' metadata");
   }
-  const std::string value(it->second.data(), it->second.size());
-  if (!ConstantTimeEquals(value, absl::StrCat("Bearer ", token_))) {
+  const absl::string_view value(it->second.data(), it->second.size());
+  // "<scheme> <token>": the scheme compares case-insensitively, the token exactly.
+  const size_t space = value.find(' ');
+  if (space == absl::string_view::npos ||
+      !absl::EqualsIgnoreCase(value.substr(0, space), "bearer")) {
+    return grpc::Status(grpc::StatusCode::UNAUTHENTICATED,
+                        "authorization: expected the scheme 'Bearer <token>'");
+  }
+  const std::string presented(absl::StripLeadingAsciiWhitespace(value.substr(space + 1)));
+  if (!ConstantTimeEquals(presented, token_)) {
     return grpc::Status(grpc::StatusCode::UNAUTHENTICATED, "invalid bearer token");
   }
   return grpc::Status::OK;
+}
+
+std::string TokenFileModeWarning(const std::string& path, unsigned mode) {
+  if ((mode & (S_IRGRP | S_IROTH)) == 0) return "";
+  return absl::StrFormat(
+      "--token-file %s has mode %04o: readable by %s; chmod 600 it so only the server's user "
+      "can read the token",
+      path, mode & 07777,
+      (mode & S_IRGRP) == 0 ? "others"
+                            : ((mode & S_IROTH) == 0 ? "its group" : "its group and others"));
+}
+
+std::string TokenFileModeWarning(const std::string& path) {
+  struct stat st;
+  if (path.empty() || stat(path.c_str(), &st) != 0) return "";
+  return TokenFileModeWarning(path, static_cast<unsigned>(st.st_mode));
 }
 
 }  // namespace swarmplan::server

@@ -11,8 +11,9 @@ class Status;
 
 namespace swarmplan::server {
 
-// Optional bearer-token check: with a token, every call must carry the metadata
-// "authorization: Bearer <token>". Without one, every call passes.
+// Optional bearer-token check: with a token, every call but health checking (reflection
+// included) must carry the metadata "authorization: Bearer <token>"; the scheme word is
+// case-insensitive (RFC 7235), the token is not. Without one, every call passes.
 class Authenticator {
  public:
   Authenticator() = default;
@@ -27,5 +28,11 @@ class Authenticator {
  private:
   std::string token_;
 };
+
+// A warning naming the file and its mode when the token file at `path` with permission bits
+// `mode` can be read by its group or by others; "" when it cannot.
+std::string TokenFileModeWarning(const std::string& path, unsigned mode);
+// The same for the file at `path` as it is now ("" also when it cannot be examined).
+std::string TokenFileModeWarning(const std::string& path);
 
 }  // namespace swarmplan::server

@@ -18,7 +18,11 @@ struct ServerConfig {
   std::string data_dir = "./swarmplan-data";
   int workers = 0;          // 0: the number of cores
   int queue_capacity = 64;  // queued (not running) jobs
+  // Finished jobs are kept in the store for job_retention, and at most max_retained_jobs of
+  // them (the oldest beyond are deleted); job_cache_entries of them are also held in memory.
   absl::Duration job_retention = absl::Hours(24 * 7);
+  int max_retained_jobs = 100000;
+  int job_cache_entries = 1000;
   absl::Duration shutdown_grace = absl::Seconds(10);
   // Limits.
   int max_message_bytes = 64 * 1024 * 1024;

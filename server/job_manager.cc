@@ -81,11 +81,6 @@ bool SameRequest(const v1::PlanRequest& a, const v1::PlanRequest& b) {
   return google::protobuf::util::MessageDifferencer::Equals(x, y);
 }
 
-// Where a job stands in listings.
-PageKey KeyOf(const Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu) {
-  return PageKey{absl::ToUnixMicros(FromProto(job.record.created_at())), job.id};
-}
-
 // Tokens of a listing with one filter are not accepted by a listing with another.
 std::string ListScope(std::vector<v1::JobState> states) {
   std::sort(states.begin(), states.end());
@@ -158,11 +153,88 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
 void JobManager::Add(const JobPtr& job) {
   absl::MutexLock lock(&mu_);
   jobs_[job->id] = job;
-  absl::MutexLock job_lock(&job->mu);
-  order_[KeyOf(*job)] = job->id;
-  if (!job->record.request().client_request_id().empty()) {
-    by_client_request_id_[job->record.request().client_request_id()] = job->id;
+}
+
+absl::StatusOr<JobPtr> JobManager::FromStored(const StoredJob& stored) {
+  v1::Job record;
+  if (!record.ParseFromString(stored.record)) {
+    return absl::DataLossError(absl::StrCat("job ", stored.id, ": stored record is corrupt"));
   }
+  auto job = std::make_shared<Job>(stored.id, record.request().detached());
+  job->plan.algorithm = record.request().algorithm();
+  absl::MutexLock lock(&job->mu);
+  job->record = std::move(record);
+  // Nobody watches a stored job's Plan call any more.
+  job->owner_gone = true;
+  if (IsFinal(job->record.state())) {
+    v1::JobEvent finished;
+    finished.mutable_finished()->set_state(job->record.state());
+    if (job->record.has_result()) {
+      *finished.mutable_finished()->mutable_result() = job->record.result();
+    }
+    finished.mutable_finished()->set_failure_reason(job->record.failure_reason());
+    job->events.Publish(std::move(finished));
+  }
+  return job;
+}
+
+void JobManager::CacheFinished(const JobPtr& job) {
+  if (auto it = cache_pos_.find(job->id); it != cache_pos_.end()) {
+    cache_order_.splice(cache_order_.begin(), cache_order_, it->second);
+  } else {
+    jobs_[job->id] = job;
+    cache_order_.push_front(job->id);
+    cache_pos_[job->id] = cache_order_.begin();
+  }
+  while (cache_order_.size() > static_cast<size_t>(config_.job_cache_entries)) {
+    jobs_.erase(cache_order_.back());
+    cache_pos_.erase(cache_order_.back());
+    cache_order_.pop_back();
+  }
+  metrics_.SetJobCacheEntries(static_cast<int>(cache_order_.size()));
+}
+
+void JobManager::Forget(const std::vector<std::string>& ids) {
+  for (const std::string& id : ids) {
+    if (auto it = cache_pos_.find(id); it != cache_pos_.end()) {
+      cache_order_.erase(it->second);
+      cache_pos_.erase(it);
+      jobs_.erase(id);
+    }
+  }
+  metrics_.SetJobCacheEntries(static_cast<int>(cache_order_.size()));
+}
+
+int JobManager::cached_finished_jobs() const {
+  absl::MutexLock lock(&mu_);
+  return static_cast<int>(cache_order_.size());
+}
+
+void JobManager::Retire(Job& job) {
+  {
+    absl::MutexLock lock(&retention_mu_);
+    ++finished_in_store_;
+  }
+  {
+    absl::MutexLock lock(&mu_);
+    if (auto it = jobs_.find(job.id); it != jobs_.end()) CacheFinished(it->second);
+  }
+  EnforceRetainedCap();
+}
+
+void JobManager::EnforceRetainedCap() {
+  absl::MutexLock retention_lock(&retention_mu_);
+  const int64_t excess = finished_in_store_ - config_.max_retained_jobs;
+  if (excess <= 0) return;
+  absl::StatusOr<std::vector<std::string>> deleted = store_.DeleteOldestFinishedJobs(excess);
+  if (!deleted.ok()) {
+    spdlog::warn("cannot delete the finished jobs beyond --max-retained-jobs {}: {}",
+                 config_.max_retained_jobs, deleted.status().ToString());
+    return;
+  }
+  finished_in_store_ -= static_cast<int64_t>(deleted->size());
+  absl::MutexLock lock(&mu_);
+  Forget(*deleted);
 }
 
 absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& request,
@@ -170,10 +242,13 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
   if (absl::Status s = CheckRequestBounds(request); !s.ok()) return s;
   absl::MutexLock submit_lock(&submit_mu_);
   if (!request.client_request_id().empty()) {
-    absl::MutexLock lock(&mu_);
-    if (auto it = by_client_request_id_.find(request.client_request_id());
-        it != by_client_request_id_.end()) {
-      JobPtr first = jobs_.at(it->second);
+    // Every job is in the store before Submit returns, so the store knows every id in use.
+    absl::StatusOr<StoredJob> stored = store_.FindJobByClientRequestId(request.client_request_id());
+    if (!stored.ok() && !absl::IsNotFound(stored.status())) return stored.status();
+    absl::StatusOr<JobPtr> found =
+        stored.ok() ? Find(stored->id) : absl::StatusOr<JobPtr>(stored.status());
+    if (found.ok()) {
+      JobPtr first = *found;
       absl::MutexLock job_lock(&first->mu);
       if (!SameRequest(first->record.request(), request)) {
         return absl::AlreadyExistsError(
@@ -191,6 +266,8 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
   auto job = std::make_shared<Job>(NewId("job-"), detached);
   job->plan = std::move(*plan);
   job->map_name = map_name;
+  // Known before a worker can take it, so that it finishes (and is cached) as a known job.
+  Add(job);
   {
     absl::MutexLock job_lock(&job->mu);
     const absl::Time now = absl::Now();
@@ -203,7 +280,11 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     *job->record.mutable_created_at() = ToProto(now);
     // Queue, record and announce under the job's lock: a worker cannot start it before.
     absl::StatusOr<int> position = queue_->Push(job);
-    if (!position.ok()) return position.status();
+    if (!position.ok()) {
+      absl::MutexLock lock(&mu_);
+      jobs_.erase(job->id);
+      return position.status();
+    }
     job->record.set_queue_position(*position);
     Persist(*job);
     spdlog::info("job {} queued algorithm={} map={} seed={} position={}", job->id,
@@ -213,7 +294,6 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     accepted.mutable_accepted()->set_seed(seed);
     job->events.Publish(std::move(accepted));
   }
-  Add(job);
   return Submitted{job, false};
 }
 
@@ -223,6 +303,7 @@ void JobManager::Persist(Job& job) {
   stored.state = job.record.state();
   job.record.SerializeToString(&stored.record);
   stored.created_at = FromProto(job.record.created_at());
+  stored.client_request_id = job.record.request().client_request_id();
   if (IsFinal(job.record.state())) stored.finished_at = FromProto(job.record.finished_at());
   if (absl::Status s = store_.PutJob(stored); !s.ok()) {
     spdlog::error("job {}: cannot record state {}: {}", job.id, StateLabel(job.record.state()),
@@ -230,12 +311,28 @@ void JobManager::Persist(Job& job) {
   }
 }
 
-absl::StatusOr<JobPtr> JobManager::Find(const std::string& id) const {
+absl::StatusOr<JobPtr> JobManager::Find(const std::string& id) {
   if (id.empty()) return absl::InvalidArgumentError("id: required");
+  {
+    absl::MutexLock lock(&mu_);
+    if (auto it = jobs_.find(id); it != jobs_.end()) {
+      JobPtr job = it->second;
+      if (cache_pos_.count(id) != 0) CacheFinished(job);  // most recently used now
+      return job;
+    }
+  }
+  absl::StatusOr<StoredJob> stored = store_.GetJob(id);
+  if (absl::IsNotFound(stored.status()) ||
+      (stored.ok() && stored->finished_at < absl::Now() - config_.job_retention)) {
+    return absl::NotFoundError(absl::StrCat("job '", id, "' not found"));
+  }
+  if (!stored.ok()) return stored.status();
+  absl::StatusOr<JobPtr> job = FromStored(*stored);
+  if (!job.ok()) return job.status();
   absl::MutexLock lock(&mu_);
-  auto it = jobs_.find(id);
-  if (it == jobs_.end()) return absl::NotFoundError(absl::StrCat("job '", id, "' not found"));
-  return it->second;
+  if (auto it = jobs_.find(id); it != jobs_.end()) return it->second;  // loaded meanwhile
+  if (stored->finished_at != absl::InfiniteFuture()) CacheFinished(*job);
+  return *job;
 }
 
 v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
@@ -256,39 +353,55 @@ v1::Job JobManager::Snapshot(Job& job, bool with_result) const {
 
 absl::StatusOr<JobManager::Page> JobManager::List(const std::vector<v1::JobState>& states,
                                                   int page_size, size_t max_bytes,
-                                                  const std::string& page_token) const {
+                                                  const std::string& page_token) {
   const std::string scope = ListScope(states);
-  std::optional<PageKey> before;
+  std::optional<JobCursor> before;
   if (!page_token.empty()) {
     absl::StatusOr<PageKey> key = DecodePageToken(page_token, scope);
     if (!key.ok()) return key.status();
-    before = std::move(*key);
+    before = JobCursor{key->created_us, key->id};
   }
-  std::vector<JobPtr> candidates;
-  {
-    absl::MutexLock lock(&mu_);
-    auto end = before.has_value() ? order_.lower_bound(*before) : order_.end();
-    for (auto it = std::make_reverse_iterator(end); it != order_.rend(); ++it) {
-      candidates.push_back(jobs_.at(it->second));
-    }
-  }
+  // The store lists every job; one more row than the page says whether another page follows.
+  const std::vector<int> stored_states(states.begin(), states.end());
+  absl::StatusOr<std::vector<StoredJob>> rows =
+      store_.ListJobs(before.has_value() ? &*before : nullptr, stored_states, page_size + 1);
+  if (!rows.ok()) return rows.status();
   Page page;
   size_t bytes = 0;
-  PageKey last;
-  for (const JobPtr& job : candidates) {
-    v1::Job snapshot = Snapshot(*job, /*with_result=*/false);
+  PageKey last_listed, last_seen;
+  bool stopped = false;
+  for (const StoredJob& row : *rows) {
+    JobPtr live;
+    {
+      absl::MutexLock lock(&mu_);
+      if (auto it = jobs_.find(row.id); it != jobs_.end()) live = it->second;
+    }
+    v1::Job snapshot;
+    if (live != nullptr) {
+      snapshot = Snapshot(*live, /*with_result=*/false);
+    } else if (!snapshot.ParseFromString(row.record)) {
+      spdlog::warn("job {}: stored record is corrupt; not listed", row.id);
+      continue;
+    }
+    snapshot.clear_result();
+    last_seen = PageKey{absl::ToUnixMicros(row.created_at), row.id};
+    // A job that changed state since the store answered may no longer match the filter.
     if (!states.empty() &&
         std::find(states.begin(), states.end(), snapshot.state()) == states.end()) {
       continue;
     }
     if (static_cast<int>(page.jobs.size()) == page_size ||
         !FitsPage(bytes, snapshot.ByteSizeLong(), max_bytes)) {
-      page.next_page_token = EncodePageToken(last, scope);
+      page.next_page_token = EncodePageToken(last_listed, scope);
+      stopped = true;
       break;
     }
     bytes += snapshot.ByteSizeLong();
-    last = PageKey{absl::ToUnixMicros(FromProto(snapshot.created_at())), snapshot.id()};
+    last_listed = last_seen;
     page.jobs.push_back(std::move(snapshot));
+  }
+  if (!stopped && static_cast<int>(rows->size()) > page_size) {
+    page.next_page_token = EncodePageToken(last_seen, scope);
   }
   return page;
 }
@@ -313,14 +426,16 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
 absl::Status JobManager::DeleteMap(const std::string& id) {
   // Submit resolves and queues under submit_mu_: no job can take the map meanwhile.
   absl::MutexLock submit_lock(&submit_mu_);
-  std::vector<std::string> holding;
+  std::vector<JobPtr> all;
   {
     absl::MutexLock lock(&mu_);
-    for (const auto& [job_id, job] : jobs_) {
-      absl::MutexLock job_lock(&job->mu);
-      if (!IsFinal(job->record.state()) && job->record.request().map_id() == id) {
-        holding.push_back(job_id);
-      }
+    for (const auto& [job_id, job] : jobs_) all.push_back(job);
+  }
+  std::vector<std::string> holding;
+  for (const JobPtr& job : all) {
+    absl::MutexLock job_lock(&job->mu);
+    if (!IsFinal(job->record.state()) && job->record.request().map_id() == id) {
+      holding.push_back(job->id);
     }
   }
   if (!holding.empty()) {
@@ -371,92 +486,85 @@ void JobManager::Finish(Job& job, v1::JobState state, const PlanResult* result,
   spdlog::info("job {} {} algorithm={} map={} duration={:.3f}s{}{}", job.id, StateLabel(state),
                job.plan.algorithm, job.record.request().map_id(), seconds,
                reason.empty() ? "" : " reason=", reason);
+  // Before anyone can see the final state and list: the cap holds whenever a job is final.
+  Retire(job);
 }
 
-void JobManager::SweepExpired() {
-  const absl::Time now = absl::Now();
-  const absl::Time cutoff = now - config_.job_retention;
-  std::vector<JobPtr> all;
+void JobManager::SweepExpired(bool now) {
+  const absl::Time t = absl::Now();
   {
     absl::MutexLock lock(&mu_);
-    if (now - last_sweep_ < absl::Minutes(1)) return;
-    last_sweep_ = now;
-    for (const auto& [id, job] : jobs_) all.push_back(job);
+    if (!now && t - last_sweep_ < absl::Minutes(1)) return;
+    last_sweep_ = t;
   }
-  std::vector<std::string> expired;
-  for (const JobPtr& job : all) {
-    absl::MutexLock lock(&job->mu);
-    if (IsFinal(job->record.state()) && FromProto(job->record.finished_at()) < cutoff) {
-      expired.push_back(job->id);
-    }
+  absl::MutexLock retention_lock(&retention_mu_);
+  absl::StatusOr<std::vector<std::string>> deleted =
+      store_.DeleteJobsFinishedBefore(t - config_.job_retention);
+  if (!deleted.ok()) {
+    spdlog::warn("cannot delete expired jobs: {}", deleted.status().ToString());
+    return;
   }
-  if (absl::StatusOr<int> n = store_.DeleteJobsFinishedBefore(cutoff); !n.ok()) {
-    spdlog::warn("cannot delete expired jobs: {}", n.status().ToString());
-  }
+  finished_in_store_ -= static_cast<int64_t>(deleted->size());
   absl::MutexLock lock(&mu_);
-  for (const std::string& id : expired) jobs_.erase(id);
-  for (auto it = order_.begin(); it != order_.end();) {
-    it = jobs_.count(it->second) ? std::next(it) : order_.erase(it);
-  }
-  for (auto it = by_client_request_id_.begin(); it != by_client_request_id_.end();) {
-    it = jobs_.count(it->second) ? std::next(it) : by_client_request_id_.erase(it);
-  }
+  Forget(*deleted);
 }
 
 absl::Status JobManager::Recover() {
-  absl::StatusOr<std::vector<StoredJob>> stored = store_.LoadJobs();
+  absl::StatusOr<std::vector<StoredJob>> stored = store_.LoadJobsToRecover();
   if (!stored.ok()) return stored.status();
-  const absl::Time cutoff = absl::Now() - config_.job_retention;
   int requeued = 0;
+  std::vector<JobPtr> failed;
   for (const StoredJob& s : *stored) {
-    if (s.finished_at != absl::InfiniteFuture() && s.finished_at < cutoff) continue;
-    v1::Job record;
-    if (!record.ParseFromString(s.record)) {
-      spdlog::warn("job {}: stored record is corrupt; skipped", s.id);
+    absl::StatusOr<JobPtr> loaded = FromStored(s);
+    if (!loaded.ok()) {
+      spdlog::warn("{}; skipped", loaded.status().ToString());
       continue;
     }
-    auto job = std::make_shared<Job>(s.id, record.request().detached());
+    JobPtr job = *loaded;
+    absl::ReleasableMutexLock lock(&job->mu);
+    if (IsFinal(job->record.state())) {
+      // Recorded before the store kept client_request_id in a column: record it there now.
+      if (!s.client_request_id_known) Persist(*job);
+      continue;
+    }
     std::string map_name;
-    absl::StatusOr<PlanRequest> plan = Resolve(record.request(), record.seed(), &map_name);
-    if (plan.ok()) {
-      job->plan = std::move(*plan);
-      job->map_name = map_name;
-    } else {
-      job->plan.algorithm = record.request().algorithm();
+    absl::StatusOr<PlanRequest> plan =
+        Resolve(job->record.request(), job->record.seed(), &map_name);
+    if (!plan.ok()) {
+      Finish(*job, v1::JOB_STATE_FAILED, nullptr,
+             absl::StrCat("cannot run again after a restart: ", plan.status().message()));
+      failed.push_back(job);
+      continue;
     }
-    {
-      absl::MutexLock lock(&job->mu);
-      job->record = std::move(record);
-      // Nobody watches a recovered job's Plan call any more.
-      job->owner_gone = true;
-      if (IsFinal(job->record.state())) {
-        v1::JobEvent finished;
-        finished.mutable_finished()->set_state(job->record.state());
-        if (job->record.has_result()) {
-          *finished.mutable_finished()->mutable_result() = job->record.result();
-        }
-        finished.mutable_finished()->set_failure_reason(job->record.failure_reason());
-        job->events.Publish(std::move(finished));
-      } else if (!plan.ok()) {
-        Finish(*job, v1::JOB_STATE_FAILED, nullptr,
-               absl::StrCat("cannot run again after a restart: ", plan.status().message()));
-      } else {
-        job->record.set_state(v1::JOB_STATE_QUEUED);
-        job->record.clear_started_at();
-        job->record.clear_progress();
-        job->queued_at = absl::Now();
-        absl::StatusOr<int> position = queue_->Push(job, /*ignore_capacity=*/true);
-        if (!position.ok()) return position.status();
-        Persist(*job);
-        v1::JobEvent accepted;
-        accepted.mutable_accepted()->set_queue_position(*position);
-        accepted.mutable_accepted()->set_seed(job->record.seed());
-        job->events.Publish(std::move(accepted));
-        ++requeued;
-      }
-    }
+    job->plan = std::move(*plan);
+    job->map_name = map_name;
+    job->record.set_state(v1::JOB_STATE_QUEUED);
+    job->record.clear_started_at();
+    job->record.clear_progress();
+    job->queued_at = absl::Now();
+    absl::StatusOr<int> position = queue_->Push(job, /*ignore_capacity=*/true);
+    if (!position.ok()) return position.status();
+    Persist(*job);
+    v1::JobEvent accepted;
+    accepted.mutable_accepted()->set_queue_position(*position);
+    accepted.mutable_accepted()->set_seed(job->record.seed());
+    job->events.Publish(std::move(accepted));
+    ++requeued;
+    lock.Release();
     Add(job);
   }
+  absl::StatusOr<int64_t> finished = store_.CountFinishedJobs();
+  if (!finished.ok()) return finished.status();
+  {
+    absl::MutexLock lock(&retention_mu_);
+    finished_in_store_ = *finished;  // the failed ones included
+  }
+  {
+    absl::MutexLock lock(&mu_);
+    for (const JobPtr& job : failed) CacheFinished(job);
+  }
+  SweepExpired(/*now=*/true);
+  EnforceRetainedCap();
   if (requeued > 0) spdlog::info("recovered {} unfinished jobs; queued again", requeued);
   return absl::OkStatus();
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <list>
 #include <map>
 #include <memory>
 #include <string>
@@ -30,8 +31,8 @@ class JobManager {
              Metrics& metrics);
   ~JobManager();
 
-  // Loads the stored jobs: finished ones within the retention period are kept, queued and
-  // running ones are queued again with their recorded seed.
+  // Queues the stored queued and running jobs again with their recorded seed; finished ones
+  // stay in the store (read when asked for) within the retention period and the cap.
   absl::Status Recover();
 
   struct Submitted {
@@ -42,7 +43,9 @@ class JobManager {
   // RESOURCE_EXHAUSTED (queue full), UNAVAILABLE (shutting down).
   absl::StatusOr<Submitted> Submit(const v1::PlanRequest& request, bool detached);
 
-  absl::StatusOr<JobPtr> Find(const std::string& id) const;
+  // A job in memory (unfinished, or finished and cached), else a finished one read from the
+  // store into the cache. NOT_FOUND when neither has it.
+  absl::StatusOr<JobPtr> Find(const std::string& id);
   // The job as clients see it, with its live queue position.
   v1::Job Snapshot(Job& job, bool with_result) const;
   struct Page {
@@ -53,7 +56,7 @@ class JobManager {
   // `page_size` jobs and `max_bytes` serialized bytes (FitsPage). INVALID_ARGUMENT naming
   // page_token for a token List did not issue for these states.
   absl::StatusOr<Page> List(const std::vector<v1::JobState>& states, int page_size,
-                            size_t max_bytes, const std::string& page_token) const;
+                            size_t max_bytes, const std::string& page_token);
   absl::StatusOr<v1::Job> Cancel(const std::string& id);
 
   // Deletes a map no queued or running job refers to: FAILED_PRECONDITION naming those jobs
@@ -72,6 +75,8 @@ class JobManager {
 
   int queue_depth() const { return queue_->depth(); }
   int busy_workers() const { return queue_->busy(); }
+  // Finished jobs held in memory (at most --job-cache-entries).
+  int cached_finished_jobs() const;
 
  private:
   absl::StatusOr<PlanRequest> Resolve(const v1::PlanRequest& request, uint64_t seed,
@@ -82,7 +87,16 @@ class JobManager {
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
   void Persist(Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
   void Add(const JobPtr& job);
-  void SweepExpired();
+  // A job built from its stored record; a finished one carries its finished event.
+  static absl::StatusOr<JobPtr> FromStored(const StoredJob& stored);
+  // From Finish: moves the job into the cache of finished jobs and deletes the oldest finished
+  // jobs beyond --max-retained-jobs. Lock order: a job's mu, retention_mu_, mu_; nothing takes
+  // a job's lock while holding mu_.
+  void Retire(Job& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(job.mu);
+  void CacheFinished(const JobPtr& job) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void Forget(const std::vector<std::string>& ids) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  void EnforceRetainedCap();
+  void SweepExpired(bool now = false);
 
   const ServerConfig config_;
   const Registry& registry_;
@@ -91,10 +105,17 @@ class JobManager {
   Metrics& metrics_;
   OptimumCache optima_;
 
+  // Serialises deleting finished jobs (the cap and the retention time); taken before mu_.
+  absl::Mutex retention_mu_;
+  int64_t finished_in_store_ ABSL_GUARDED_BY(retention_mu_) = 0;
+
   mutable absl::Mutex mu_;
+  // Every unfinished job, and the finished ones in the cache. The store has every job; lists
+  // and finished jobs outside the cache are read from it.
   std::map<std::string, JobPtr> jobs_ ABSL_GUARDED_BY(mu_);
-  std::map<PageKey, std::string> order_ ABSL_GUARDED_BY(mu_);  // listing order of jobs_
-  std::map<std::string, std::string> by_client_request_id_ ABSL_GUARDED_BY(mu_);
+  // Ids of the cached finished jobs, most recently used first, and where each one stands.
+  std::list<std::string> cache_order_ ABSL_GUARDED_BY(mu_);
+  std::map<std::string, std::list<std::string>::iterator> cache_pos_ ABSL_GUARDED_BY(mu_);
   absl::Time last_sweep_ ABSL_GUARDED_BY(mu_) = absl::InfinitePast();
   absl::Mutex submit_mu_;  // makes client_request_id dedupe atomic
   // Set by Shutdown: streams cut by the shutdown do not cancel their jobs, which stay queued.

@@ -98,6 +98,13 @@ struct Metrics::Impl {
                                 .Help("Maps held by the server")
                                 .Register(*registry)
                                 .Add({});
+  prometheus::Gauge& job_cache = prometheus::BuildGauge()
+                                     .Name("swarmplan_job_cache_entries")
+                                     .Help(
+                                         "Finished jobs held in memory; the others are read "
+                                         "from the store when asked for")
+                                     .Register(*registry)
+                                     .Add({});
   std::unique_ptr<prometheus::Exposer> exposer;
   int port = 0;
 
@@ -132,6 +139,8 @@ void Metrics::SetWorkers(int total) { impl_->workers.Set(total); }
 void Metrics::SetWorkersBusy(int busy) { impl_->busy.Set(busy); }
 
 void Metrics::SetMapsStored(int maps) { impl_->maps.Set(maps); }
+
+void Metrics::SetJobCacheEntries(int entries) { impl_->job_cache.Set(entries); }
 
 void Metrics::RpcHandled(const std::string& method, const std::string& code, double seconds) {
   const Labels labels{{"method", method}, {"code", code}};

@@ -18,6 +18,8 @@ namespace swarmplan::server {
 //   swarmplan_rpc_requests_total{method,code}        RPCs handled
 //   swarmplan_rpc_duration_seconds{method,code}      RPC latency (streams: until the end)
 //   swarmplan_maps_stored                            maps held
+//   swarmplan_job_cache_entries                      finished jobs held in memory (the rest:
+//                                                    in the store only)
 //   swarmplan_build_info{version}                    1
 class Metrics {
  public:
@@ -31,6 +33,7 @@ class Metrics {
   void SetWorkers(int total);
   void SetWorkersBusy(int busy);
   void SetMapsStored(int maps);
+  void SetJobCacheEntries(int entries);
   void RpcHandled(const std::string& method, const std::string& code, double seconds);
 
   // Serves GET /metrics on address:port (port 0: any free port). FAILED_PRECONDITION naming

@@ -1,6 +1,5 @@
 #include "server/server.h"
 
-#include <grpcpp/ext/proto_server_reflection_plugin.h>
 #include <grpcpp/grpcpp.h>
 #include <grpcpp/health_check_service_interface.h>
 #include <spdlog/spdlog.h>
@@ -15,6 +14,7 @@
 #include "server/job_manager.h"
 #include "server/map_catalog.h"
 #include "server/metrics.h"
+#include "server/reflection.h"
 #include "server/rpc_metrics.h"
 #include "server/services.h"
 #include "server/sqlite_store.h"
@@ -55,6 +55,7 @@ struct Server::Impl {
   std::unique_ptr<MapServiceImpl> map_service;
   std::unique_ptr<AlgorithmServiceImpl> algorithm_service;
   std::unique_ptr<JobServiceImpl> job_service;
+  std::unique_ptr<ReflectionServiceImpl> reflection_service;
   std::unique_ptr<grpc::Server> grpc_server;
   int port = 0;
 
@@ -76,6 +77,9 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
   absl::StatusOr<Authenticator> auth = Authenticator::FromFile(config.token_file);
   if (!auth.ok()) return auth.status();
   impl->auth = *auth;
+  if (std::string warning = TokenFileModeWarning(config.token_file); !warning.empty()) {
+    spdlog::warn("{}", warning);
+  }
   absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> credentials = Credentials(config);
   if (!credentials.ok()) return credentials.status();
 
@@ -109,8 +113,15 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
   impl->algorithm_service = std::make_unique<AlgorithmServiceImpl>(registry, impl->auth);
   impl->job_service = std::make_unique<JobServiceImpl>(*impl->jobs, impl->config, impl->auth);
 
+  // Our own reflection service, not gRPC's plugin: that one answers without the token.
+  impl->reflection_service = std::make_unique<ReflectionServiceImpl>(
+      std::vector<std::string>{v1::MapService::service_full_name(),
+                               v1::AlgorithmService::service_full_name(),
+                               v1::JobService::service_full_name(), "grpc.health.v1.Health",
+                               grpc::reflection::v1alpha::ServerReflection::service_full_name()},
+      impl->auth);
+
   grpc::EnableDefaultHealthCheckService(true);
-  grpc::reflection::InitProtoReflectionServerBuilderPlugin();
   grpc::ServerBuilder builder;
   builder.AddListeningPort(config.listen, *credentials, &impl->port);
   builder.SetMaxReceiveMessageSize(config.max_message_bytes);
@@ -118,6 +129,7 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
   builder.RegisterService(impl->map_service.get());
   builder.RegisterService(impl->algorithm_service.get());
   builder.RegisterService(impl->job_service.get());
+  builder.RegisterService(impl->reflection_service.get());
   std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> interceptors;
   interceptors.push_back(std::make_unique<RpcMetricsInterceptorFactory>(impl->metrics));
   builder.experimental().SetInterceptorCreators(std::move(interceptors));

@@ -27,7 +27,11 @@ CREATE TABLE IF NOT EXISTS jobs (
   finished_us INTEGER
 );
 CREATE INDEX IF NOT EXISTS jobs_finished ON jobs(finished_us);
+CREATE INDEX IF NOT EXISTS jobs_created ON jobs(created_us, id);
 )sql";
+
+// Jobs also keep their client_request_id in a column (NULL: recorded before there was one).
+constexpr const char* kJobColumns = "id, state, record, created_us, finished_us, client_request_id";
 
 // A prepared statement, finalized when it goes out of scope.
 class Statement {
@@ -75,6 +79,28 @@ StoredMap ReadMap(const Statement& s) {
   return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), s.Text(4), FromMicros(s.Int(5))};
 }
 
+// A row of kJobColumns.
+StoredJob ReadJob(const Statement& s) {
+  StoredJob job;
+  job.id = s.Text(0);
+  job.state = static_cast<int>(s.Int(1));
+  job.record = s.Text(2);
+  job.created_at = FromMicros(s.Int(3));
+  if (!s.IsNull(4)) job.finished_at = FromMicros(s.Int(4));
+  job.client_request_id_known = !s.IsNull(5);
+  job.client_request_id = s.Text(5);
+  return job;
+}
+
+// Every row `s` yields.
+absl::StatusOr<std::vector<StoredJob>> ReadJobs(Statement& s) {
+  std::vector<StoredJob> jobs;
+  int rc;
+  while ((rc = s.Step()) == SQLITE_ROW) jobs.push_back(ReadJob(s));
+  if (rc != SQLITE_DONE) return s.Error("step");
+  return jobs;
+}
+
 }  // namespace
 
 absl::StatusOr<std::unique_ptr<SqliteStore>> SqliteStore::Open(const std::string& data_dir) {
@@ -100,6 +126,7 @@ absl::StatusOr<std::unique_ptr<SqliteStore>> SqliteStore::Open(const std::string
   for (const char* sql : {"PRAGMA journal_mode=WAL;", "PRAGMA synchronous=FULL;", kSchema}) {
     if (absl::Status s = store->Exec(sql); !s.ok()) return s;
   }
+  if (absl::Status s = store->Migrate(); !s.ok()) return s;
   return store;
 }
 
@@ -116,6 +143,19 @@ absl::Status SqliteStore::Exec(const char* sql) {
     return s;
   }
   return absl::OkStatus();
+}
+
+absl::Status SqliteStore::Migrate() {
+  Statement columns(db_,
+                    "SELECT 1 FROM pragma_table_info('jobs') WHERE name = 'client_request_id'");
+  if (absl::Status st = columns.status(); !st.ok()) return st;
+  const int rc = columns.Step();
+  if (rc == SQLITE_ROW)
+    return Exec("CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);");
+  if (rc != SQLITE_DONE) return columns.Error("step");
+  return Exec(
+      "ALTER TABLE jobs ADD COLUMN client_request_id TEXT;"
+      "CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);");
 }
 
 absl::Status SqliteStore::PutMap(const StoredMap& map) {
@@ -172,8 +212,8 @@ absl::Status SqliteStore::DeleteMap(const std::string& id) {
 absl::Status SqliteStore::PutJob(const StoredJob& job) {
   absl::MutexLock lock(&mu_);
   Statement s(db_,
-              "INSERT OR REPLACE INTO jobs(id, state, record, created_us, finished_us) "
-              "VALUES (?, ?, ?, ?, ?)");
+              "INSERT OR REPLACE INTO jobs(id, state, record, created_us, finished_us, "
+              "client_request_id) VALUES (?, ?, ?, ?, ?, ?)");
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, job.id);
   s.Bind(2, static_cast<int64_t>(job.state));
@@ -184,32 +224,118 @@ absl::Status SqliteStore::PutJob(const StoredJob& job) {
   } else {
     s.Bind(5, ToMicros(job.finished_at));
   }
+  s.BindText(6, job.client_request_id);
   return s.Done();
 }
 
-absl::StatusOr<std::vector<StoredJob>> SqliteStore::LoadJobs() {
+absl::StatusOr<StoredJob> SqliteStore::GetJob(const std::string& id) {
   absl::MutexLock lock(&mu_);
-  Statement s(
-      db_, "SELECT id, state, record, created_us, finished_us FROM jobs ORDER BY created_us, id");
+  Statement s(db_, absl::StrCat("SELECT ", kJobColumns, " FROM jobs WHERE id = ?").c_str());
   if (absl::Status st = s.status(); !st.ok()) return st;
-  std::vector<StoredJob> jobs;
-  int rc;
-  while ((rc = s.Step()) == SQLITE_ROW) {
-    StoredJob job{s.Text(0), static_cast<int>(s.Int(1)), s.Text(2), FromMicros(s.Int(3))};
-    if (!s.IsNull(4)) job.finished_at = FromMicros(s.Int(4));
-    jobs.push_back(std::move(job));
-  }
-  if (rc != SQLITE_DONE) return s.Error("step");
-  return jobs;
+  s.BindText(1, id);
+  const int rc = s.Step();
+  if (rc == SQLITE_ROW) return ReadJob(s);
+  if (rc == SQLITE_DONE) return absl::NotFoundError(absl::StrCat("job '", id, "' not found"));
+  return s.Error("step");
 }
 
-absl::StatusOr<int> SqliteStore::DeleteJobsFinishedBefore(absl::Time cutoff) {
+absl::StatusOr<StoredJob> SqliteStore::FindJobByClientRequestId(const std::string& id) {
   absl::MutexLock lock(&mu_);
-  Statement s(db_, "DELETE FROM jobs WHERE finished_us IS NOT NULL AND finished_us < ?");
+  Statement s(db_, absl::StrCat("SELECT ", kJobColumns,
+                                " FROM jobs WHERE client_request_id = ? "
+                                "ORDER BY created_us DESC, id DESC LIMIT 1")
+                       .c_str());
   if (absl::Status st = s.status(); !st.ok()) return st;
-  s.Bind(1, ToMicros(cutoff));
-  if (absl::Status st = s.Done(); !st.ok()) return st;
-  return sqlite3_changes(db_);
+  s.BindText(1, id);
+  const int rc = s.Step();
+  if (rc == SQLITE_ROW) return ReadJob(s);
+  if (rc == SQLITE_DONE) {
+    return absl::NotFoundError(absl::StrCat("no job with client_request_id '", id, "'"));
+  }
+  return s.Error("step");
+}
+
+absl::StatusOr<std::vector<StoredJob>> SqliteStore::LoadJobsToRecover() {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, absl::StrCat("SELECT ", kJobColumns,
+                                " FROM jobs WHERE finished_us IS NULL OR client_request_id IS NULL "
+                                "ORDER BY created_us, id")
+                       .c_str());
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  return ReadJobs(s);
+}
+
+absl::StatusOr<std::vector<StoredJob>> SqliteStore::ListJobs(const JobCursor* before,
+                                                             const std::vector<int>& states,
+                                                             int limit) {
+  std::string sql = absl::StrCat("SELECT ", kJobColumns, " FROM jobs WHERE 1");
+  if (before != nullptr) absl::StrAppend(&sql, " AND (created_us, id) < (?, ?)");
+  if (!states.empty()) {
+    absl::StrAppend(&sql, " AND state IN (?");
+    for (size_t i = 1; i < states.size(); ++i) absl::StrAppend(&sql, ", ?");
+    absl::StrAppend(&sql, ")");
+  }
+  absl::StrAppend(&sql, " ORDER BY created_us DESC, id DESC LIMIT ?");
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, sql.c_str());
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  int i = 1;
+  if (before != nullptr) {
+    s.Bind(i++, before->created_us);
+    s.BindText(i++, before->id);
+  }
+  for (int state : states) s.Bind(i++, static_cast<int64_t>(state));
+  s.Bind(i, static_cast<int64_t>(limit));
+  return ReadJobs(s);
+}
+
+absl::StatusOr<int64_t> SqliteStore::CountFinishedJobs() {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, "SELECT COUNT(*) FROM jobs WHERE finished_us IS NOT NULL");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  if (s.Step() != SQLITE_ROW) return s.Error("step");
+  return s.Int(0);
+}
+
+absl::StatusOr<std::vector<std::string>> SqliteStore::DeleteSelected(const char* select,
+                                                                     int64_t value) {
+  std::vector<std::string> ids;
+  {
+    Statement s(db_, select);
+    if (absl::Status st = s.status(); !st.ok()) return st;
+    s.Bind(1, value);
+    int rc;
+    while ((rc = s.Step()) == SQLITE_ROW) ids.push_back(s.Text(0));
+    if (rc != SQLITE_DONE) return s.Error("step");
+  }
+  if (ids.empty()) return ids;
+  if (absl::Status st = Exec("BEGIN"); !st.ok()) return st;
+  for (const std::string& id : ids) {
+    Statement s(db_, "DELETE FROM jobs WHERE id = ?");
+    if (absl::Status st = s.status(); !st.ok()) {
+      (void)Exec("ROLLBACK");
+      return st;
+    }
+    s.BindText(1, id);
+    if (absl::Status st = s.Done(); !st.ok()) {
+      (void)Exec("ROLLBACK");
+      return st;
+    }
+  }
+  if (absl::Status st = Exec("COMMIT"); !st.ok()) return st;
+  return ids;
+}
+
+absl::StatusOr<std::vector<std::string>> SqliteStore::DeleteJobsFinishedBefore(absl::Time cutoff) {
+  absl::MutexLock lock(&mu_);
+  return DeleteSelected("SELECT id FROM jobs WHERE finished_us IS NOT NULL AND finished_us < ?",
+                        ToMicros(cutoff));
+}
+
+absl::StatusOr<std::vector<std::string>> SqliteStore::DeleteOldestFinishedJobs(int64_t n) {
+  absl::MutexLock lock(&mu_);
+  return DeleteSelected(
+      "SELECT id FROM jobs WHERE finished_us IS NOT NULL ORDER BY finished_us, id LIMIT ?", n);
 }
 
 }  // namespace swarmplan::server

@@ -23,12 +23,24 @@ class SqliteStore final : public Store {
   absl::StatusOr<std::vector<StoredMap>> LoadMaps() override;
   absl::Status DeleteMap(const std::string& id) override;
   absl::Status PutJob(const StoredJob& job) override;
-  absl::StatusOr<std::vector<StoredJob>> LoadJobs() override;
-  absl::StatusOr<int> DeleteJobsFinishedBefore(absl::Time cutoff) override;
+  absl::StatusOr<StoredJob> GetJob(const std::string& id) override;
+  absl::StatusOr<StoredJob> FindJobByClientRequestId(const std::string& id) override;
+  absl::StatusOr<std::vector<StoredJob>> LoadJobsToRecover() override;
+  absl::StatusOr<std::vector<StoredJob>> ListJobs(const JobCursor* before,
+                                                  const std::vector<int>& states,
+                                                  int limit) override;
+  absl::StatusOr<int64_t> CountFinishedJobs() override;
+  absl::StatusOr<std::vector<std::string>> DeleteJobsFinishedBefore(absl::Time cutoff) override;
+  absl::StatusOr<std::vector<std::string>> DeleteOldestFinishedJobs(int64_t n) override;
 
  private:
   explicit SqliteStore(sqlite3* db) : db_(db) {}
   absl::Status Exec(const char* sql) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Adds columns and indexes a database made by an earlier version lacks.
+  absl::Status Migrate() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Runs `select` (ids of jobs to delete, bound by `bind`) and deletes those jobs.
+  absl::StatusOr<std::vector<std::string>> DeleteSelected(const char* select, int64_t value)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
 
   absl::Mutex mu_;
   sqlite3* db_ ABSL_GUARDED_BY(mu_);

@@ -301,15 +301,26 @@ def main():
     wrong = os.path.join(work, "wrong-token")
     with open(wrong, "w") as f:
         f.write("not-the-secret\n")
+    # A token file others can read is served, with a warning naming the file and its mode.
+    os.chmod(token, 0o644)
     with ServerFixture(args.server_binary, ["--token-file", token]) as server:
         cli = Cli(args.client, server.address)
         cli.failures = failures
+        cli.check("--token-file %s has mode 0644" % token in server.log(),
+                  "a world-readable token file is warned about")
         cli.run("health")
         error = cli.json("maps", "list", expect=7).get("error", {})
         cli.check(error.get("code") == "UNAUTHENTICATED", "no token: UNAUTHENTICATED")
         cli.run("--token-file", wrong, "algorithms", expect=7)
         cli.run("--token-file", token, "maps", "upload", warehouse)
         cli.run("--token-file", os.path.join(work, "no-such-token"), "algorithms", expect=1)
+        failures = cli.failures
+    os.chmod(token, 0o600)
+    with ServerFixture(args.server_binary, ["--token-file", token]) as server:
+        cli = Cli(args.client, server.address)
+        cli.failures = failures
+        cli.check("has mode" not in server.log(), "a token file only its owner reads: no warning")
+        cli.run("--token-file", token, "algorithms")
         failures = cli.failures
 
     shutil.rmtree(work, ignore_errors=True)

@@ -13,6 +13,17 @@ TEST(ConfigTest, DefaultsWhenNothingIsGiven) {
   EXPECT_EQ(config->metrics_port, 9464);
   EXPECT_EQ(config->workers, 0);
   EXPECT_TRUE(config->token_file.empty());
+  EXPECT_EQ(config->max_retained_jobs, 100000);
+  EXPECT_EQ(config->job_cache_entries, 1000);
+}
+
+TEST(ConfigTest, RetainedJobsAndTheJobCacheHaveFlagsAndVariables) {
+  absl::StatusOr<ServerConfig> config =
+      ParseConfig({"--max-retained-jobs=3"},
+                  {"SWARMPLAN_JOB_CACHE_ENTRIES=0", "SWARMPLAN_MAX_RETAINED_JOBS=9"});
+  ASSERT_TRUE(config.ok()) << config.status();
+  EXPECT_EQ(config->max_retained_jobs, 3);
+  EXPECT_EQ(config->job_cache_entries, 0);
 }
 
 TEST(ConfigTest, FlagsOverrideEnvironmentVariables) {
@@ -43,6 +54,8 @@ TEST(ConfigTest, BadInputNamesTheFlagOrVariable) {
   for (const Case& c : std::vector<Case>{
            {{"--workers=-1"}, {}, "--workers"},
            {{"--queue-capacity=0"}, {}, "--queue-capacity"},
+           {{"--max-retained-jobs=0"}, {}, "--max-retained-jobs"},
+           {{"--job-cache-entries=-1"}, {}, "--job-cache-entries"},
            {{"--max-job-time=soon"}, {}, "--max-job-time"},
            {{"--no-such-flag=1"}, {}, "--no-such-flag"},
            {{"--listen"}, {}, "--listen"},

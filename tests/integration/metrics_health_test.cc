@@ -1,8 +1,10 @@
 // Operations over loopback: Prometheus metrics scraped over HTTP, gRPC health checking and
 // server reflection (spoken with a generic stub, so no generated code of theirs is needed).
 #include <grpcpp/generic/generic_stub.h>
+#include <sys/stat.h>
 
 #include "absl/time/clock.h"
+#include "server/auth.h"
 #include "tests/integration/test_server.h"
 
 namespace swarmplan::testing {
@@ -33,10 +35,12 @@ grpc::Status RawUnary(grpc::Channel& channel, const std::string& method, const s
 
 // One request, one response on a bidi stream with raw bytes.
 grpc::Status RawBidiOnce(grpc::Channel& channel, const std::string& method,
-                         const std::string& request, std::string* response) {
+                         const std::string& request, std::string* response,
+                         const std::string& authorization = "") {
   grpc::GenericStub stub(std::shared_ptr<grpc::Channel>(&channel, [](grpc::Channel*) {}));
   grpc::CompletionQueue cq;
   grpc::ClientContext context;
+  if (!authorization.empty()) context.AddMetadata("authorization", authorization);
   void* tag;
   bool ok;
   auto call = stub.PrepareCall(&context, method, &cq);
@@ -181,15 +185,116 @@ TEST(OperationsTest, ReflectionListsTheSwarmplanServices) {
   }
 }
 
+// Writes "s3cret\n" to `path` with permission bits `mode`.
+void WriteTokenFile(const std::string& path, mode_t mode) {
+  FILE* f = fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  fputs("s3cret\n", f);
+  fclose(f);
+  ASSERT_EQ(chmod(path.c_str(), mode), 0);
+}
+
+constexpr char kReflectionMethod[] =
+    "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo";
+// ServerReflectionRequest{list_services: ""}: field 7, length 0.
+const std::string kListServices("\x3a\x00", 2);
+
+TEST(OperationsTest, ReflectionAnswersSymbolQueriesWithTheFileAndItsImports) {
+  TempDir dir;
+  TestServer server(dir.path());
+  // ServerReflectionRequest{file_containing_symbol: "swarmplan.v1.JobService"}: field 4.
+  const std::string symbol = "swarmplan.v1.JobService";
+  std::string response;
+  grpc::Status status =
+      RawBidiOnce(*server.channel(), kReflectionMethod,
+                  std::string("\x22", 1) + static_cast<char>(symbol.size()) + symbol, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_NE(response.find("swarmplan/v1/jobs.proto"), std::string::npos);
+  EXPECT_NE(response.find("swarmplan/v1/common.proto"), std::string::npos);
+  // An unknown symbol is an error response in the stream, not a failed call.
+  const std::string unknown = "no.Such";
+  status =
+      RawBidiOnce(*server.channel(), kReflectionMethod,
+                  std::string("\x22", 1) + static_cast<char>(unknown.size()) + unknown, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_NE(response.find("file_containing_symbol: no symbol no.Such"), std::string::npos);
+}
+
+TEST(OperationsTest, ReflectionNeedsTheTokenWhenOneIsSet) {
+  TempDir dir;
+  const std::string token_file = dir.path() + "/token";
+  WriteTokenFile(token_file, 0600);
+  TempDir data;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.token_file = token_file;
+  TestServer server(data.path(), config);
+  std::string response;
+  EXPECT_EQ(
+      RawBidiOnce(*server.channel(), kReflectionMethod, kListServices, &response).error_code(),
+      grpc::StatusCode::UNAUTHENTICATED);
+  EXPECT_EQ(response.find("swarmplan.v1.JobService"), std::string::npos);
+  EXPECT_EQ(
+      RawBidiOnce(*server.channel(), kReflectionMethod, kListServices, &response, "Bearer wrong")
+          .error_code(),
+      grpc::StatusCode::UNAUTHENTICATED);
+  grpc::Status status =
+      RawBidiOnce(*server.channel(), kReflectionMethod, kListServices, &response, "Bearer s3cret");
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_NE(response.find("swarmplan.v1.JobService"), std::string::npos);
+}
+
+TEST(OperationsTest, TheBearerSchemeWordIsCaseInsensitiveTheTokenIsNot) {
+  TempDir dir;
+  const std::string token_file = dir.path() + "/token";
+  WriteTokenFile(token_file, 0600);
+  TempDir data;
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.token_file = token_file;
+  TestServer server(data.path(), config);
+  v1::ListMapsResponse maps;
+  for (const std::string value :
+       {"Bearer s3cret", "bearer s3cret", "BEARER s3cret", "bEaReR s3cret", "Bearer  s3cret"}) {
+    SCOPED_TRACE(value);
+    grpc::ClientContext context;
+    context.AddMetadata("authorization", value);
+    grpc::Status status = server.maps().ListMaps(&context, {}, &maps);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+  }
+  for (const std::string value :
+       {"Bearer S3CRET", "Basic s3cret", "Bearers3cret", "s3cret", "Bearer", "Bearer s3cret2"}) {
+    SCOPED_TRACE(value);
+    grpc::ClientContext context;
+    context.AddMetadata("authorization", value);
+    EXPECT_EQ(server.maps().ListMaps(&context, {}, &maps).error_code(),
+              grpc::StatusCode::UNAUTHENTICATED);
+  }
+}
+
+TEST(OperationsTest, AGroupOrWorldReadableTokenFileIsWarnedAbout) {
+  EXPECT_EQ(server::TokenFileModeWarning("/t", 0100600), "");
+  EXPECT_EQ(server::TokenFileModeWarning("/t", 0100400), "");
+  EXPECT_EQ(server::TokenFileModeWarning("/t", 0100620), "");
+  const std::string world = server::TokenFileModeWarning("/etc/t", 0100644);
+  EXPECT_NE(world.find("--token-file /etc/t has mode 0644"), std::string::npos) << world;
+  EXPECT_NE(world.find("group and others"), std::string::npos) << world;
+  const std::string group = server::TokenFileModeWarning("/t", 0100640);
+  EXPECT_NE(group.find("mode 0640: readable by its group;"), std::string::npos) << group;
+  const std::string others = server::TokenFileModeWarning("/t", 0100604);
+  EXPECT_NE(others.find("readable by others;"), std::string::npos) << others;
+
+  TempDir dir;
+  const std::string token_file = dir.path() + "/token";
+  WriteTokenFile(token_file, 0644);
+  EXPECT_NE(server::TokenFileModeWarning(token_file).find(token_file + " has mode 0644"),
+            std::string::npos);
+  ASSERT_EQ(chmod(token_file.c_str(), 0600), 0);
+  EXPECT_EQ(server::TokenFileModeWarning(token_file), "");
+}
+
 TEST(OperationsTest, BearerTokenGuardsEveryRpcButHealth) {
   TempDir dir;
   const std::string token_file = dir.path() + "/token";
-  {
-    FILE* f = fopen(token_file.c_str(), "w");
-    ASSERT_NE(f, nullptr);
-    fputs("s3cret\n", f);
-    fclose(f);
-  }
+  WriteTokenFile(token_file, 0600);
   TempDir data;
   server::ServerConfig config = TestServer::DefaultConfig();
   config.token_file = token_file;
