@@ -189,7 +189,11 @@ class BinaryPsoSearch {
   SearchResult Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     const size_t d = vertices_.size();
-    const int n = std::max(1, static_cast<int>(std::ceil(p_.swarm_factor * d)));
+    int n = std::max(1, static_cast<int>(std::ceil(p_.swarm_factor * d)));
+    // init=seeded: the corridors of a long path hold thousands of vertices; the swarm stays
+    // bounded (ours).
+    if (!patterns_.empty())
+      n = std::min(n, std::max(p_.max_swarm, static_cast<int>(patterns_.size())));
     std::vector<std::vector<uint8_t>> bits(n, std::vector<uint8_t>(d));
     std::vector<std::vector<double>> aux(n, std::vector<double>(d)), vel = aux;
     // init=seeded: the seeds' patterns, then each in turn with about two bits flipped (ours).
@@ -338,6 +342,9 @@ std::vector<ParamSpec> BinaryPsoParams::Specs() {
                      "init=paper: refuse maps with more obstacle vertices (swarm and particle "
                      "both grow with the count)")
           .Ours(),
+      ParamSpec::Int("max_swarm", d.max_swarm, 1, 1000000, "particles",
+                     "init=seeded: the most particles (swarm_factor x the vertices otherwise)")
+          .Ours(),
       ParamSpec::Double("corridor_cap", d.corridor_cap, 1e-4, 1.0, "",
                         "init=seeded: the free width across a seed counted at most, times the "
                         "map's diagonal")
@@ -371,6 +378,7 @@ BinaryPsoParams BinaryPsoParams::From(const ParamSet& set) {
   p.penalty_factor = set.Double("penalty_factor");
   p.circle_tolerance = set.Double("circle_tolerance");
   p.max_vertices = static_cast<int>(set.Int("max_vertices"));
+  p.max_swarm = static_cast<int>(set.Int("max_swarm"));
   p.corridor_cap = set.Double("corridor_cap");
   p.corridor_margin = set.Double("corridor_margin");
   const WaypointSeeding seeding = WaypointSeedingFrom(set);
@@ -465,7 +473,8 @@ PlannerInfo BinaryPsoInfo() {
       "diagonal, a mutated bit's assistant position is negated; on grids the vertices are the "
       "free cells diagonally outside convex corners of blocked regions. init=seeded (the default; "
       "ours): the bits choose among the vertices near the corridors of exact seed paths, visited "
-      "in their order along the nearest seed, the swarm starts from the seeds' patterns and the "
+      "in their order along the nearest seed, the swarm (at most max_swarm) starts from the seeds' "
+      "patterns and the "
       "best seed is the incumbent; init=paper: the paper's initialisation over every vertex.";
   info.seed_paper = citations::kImprovedBinaryPso;
   info.encoding = Encoding::kVertexSubset;

@@ -20,10 +20,10 @@ namespace swarmplan {
 // corridors of `seeds` exact seed paths (FindSeedPaths) — within each segment's free width
 // (capped) plus a margin of the segment, and the seeds' own vertices — ordered by their position
 // along the nearest seed, so the particle's length follows the path, not the map. The swarm
-// starts from the seeds' bit patterns and perturbations of them, the best seed is the incumbent
-// from iteration 0, and the result is never longer than the best seed. init=paper: every vertex
-// of the map, ordered along the start-goal line, random initial bits, refused above
-// max_vertices. A directly constructed planner runs the paper's.
+// (1.5x the vertices, at most max_swarm) starts from the seeds' bit patterns and perturbations of
+// them, the best seed is the incumbent from iteration 0, and the result is never longer than the
+// best seed. init=paper: every vertex of the map, ordered along the start-goal line, random initial
+// bits, refused above max_vertices. A directly constructed planner runs the paper's.
 struct BinaryPsoParams {
   bool double_structure = true;
   double mutation_probability = 0.1;
@@ -39,8 +39,9 @@ struct BinaryPsoParams {
   int max_vertices = 2000;          // init=paper: more vertices are refused (ours)
   bool seeded = false;              // init=seeded (ours)
   int seeds = 3;                    // init=seeded: seed paths (ours)
-  double corridor_cap = 0.05;       // init=seeded: free width counted, times the diagonal (ours)
-  double corridor_margin = 0.01;    // init=seeded: margin beyond it, times the diagonal (ours)
+  int max_swarm = 200;              // init=seeded: the most particles (ours)
+  double corridor_cap = 0.02;       // init=seeded: free width counted, times the diagonal (ours)
+  double corridor_margin = 0.005;   // init=seeded: margin beyond it, times the diagonal (ours)
 
   static std::vector<ParamSpec> Specs();
   static BinaryPsoParams From(const ParamSet& set);
