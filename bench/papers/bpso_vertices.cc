@@ -149,7 +149,8 @@ double SuccessRate(const Runs& runs) {
 PlanSpec BpsoSpec(int iterations, double swarm_factor, double mutation, bool double_structure) {
   PlanSpec spec;
   spec.algorithm = "bpso";
-  spec.params = {{"iterations", static_cast<int64_t>(iterations)},
+  spec.params = {{"init", std::string("paper")},
+                 {"iterations", static_cast<int64_t>(iterations)},
                  {"swarm_factor", swarm_factor},
                  {"mutation_probability", mutation},
                  {"double_structure", double_structure}};

@@ -91,6 +91,7 @@ TEST(BestOrderedVertexPathTest, LiesBetweenTheOptimumAndWhatBpsoFinds) {
     EXPECT_GE(*best, Optimum(*world, BpsoVerticesStart(), BpsoVerticesGoal()) - 1e-6);
     PlanSpec spec;
     spec.algorithm = "bpso";
+    spec.params = {{"init", std::string("paper")}};  // the paper's encoding, which the bound is of
     const MapPtr map = std::make_shared<const Map>(*world);
     for (uint64_t seed : {1, 2, 3}) {
       absl::StatusOr<PlanResult> result =

@@ -12,7 +12,11 @@
 #include "core/geometry/obstacle_vertices.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/grid_space.h"
+#include "core/operators/waypoint_params.h"
+#include "core/path_metrics.h"
 #include "core/random.h"
+#include "core/seeds/corridor.h"
+#include "core/seeds/seed_paths.h"
 
 namespace swarmplan {
 namespace {
@@ -47,37 +51,165 @@ std::vector<Point2> GridCornerVertices(const OccupancyGrid& grid, double clearan
 
 double Sigmoid(double x) { return 1.0 / (1.0 + std::exp(-x)); }
 
+// The paper's visiting order: projection on the start-goal line.
+std::vector<Point2> OrderAlongStartGoal(const Problem& problem,
+                                        const std::vector<Point2>& vertices) {
+  const Point2 start(problem.start.x(), problem.start.y()),
+      goal(problem.goal.x(), problem.goal.y());
+  const Point2 axis = goal - start;
+  const double len2 = std::max(axis.squaredNorm(), 1e-300);
+  std::vector<std::pair<double, Point2>> keyed;
+  for (const Point2& v : vertices) keyed.push_back({(v - start).dot(axis) / len2, v});
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Point2> out;
+  for (const auto& [t, v] : keyed) out.push_back(v);
+  return out;
+}
+
+Point2 Flat(const Point3& p) { return Point2(p.x(), p.y()); }
+
+// The candidate vertices of a seeded search, in visiting order, and the seeds' bit patterns.
+struct SeededVertices {
+  std::vector<Point2> vertices;
+  std::vector<std::vector<uint8_t>> patterns;
+};
+
+// The vertices within reach of the seeds' corridors: a vertex is kept when it lies within
+// radius_i of some segment i of some seed, radius_i being the segment's free width (the larger
+// side of its corridor sections, sampled at most `cap` apart, capped at `cap`) plus `margin`.
+// Its key is the position (fraction of the seed's length) of its nearest point on the nearest
+// such segment; each seed's own interior vertices are added with their own positions, so the
+// best seed's pattern reproduces it exactly.
+SeededVertices SelectSeededVertices(const std::vector<SeedPath>& seeds,
+                                    const std::vector<Point2>& all, const CollisionChecker& checker,
+                                    double clearance, double cap, double margin, double tolerance) {
+  struct Segment {
+    Point2 a, b;
+    double s0 = 0.0;  // arc length at a
+    double length = 0.0;
+    double total = 1.0;  // the seed's length
+    double radius = 0.0;
+  };
+  std::vector<Segment> segments;
+  for (const SeedPath& seed : seeds) {
+    const double total = std::max(PathLength(seed.path), 1e-300);
+    double s = 0.0;
+    for (size_t i = 0; i + 1 < seed.path.size(); ++i) {
+      Segment seg;
+      seg.a = Flat(seed.path[i]);
+      seg.b = Flat(seed.path[i + 1]);
+      seg.s0 = s;
+      seg.length = (seg.b - seg.a).norm();
+      seg.total = total;
+      const Point2 normal = SegmentNormal(seed.path, i);
+      const int samples = std::max(1, static_cast<int>(std::ceil(seg.length / cap)));
+      double width = 0.0;
+      for (int k = 0; k < samples; ++k) {
+        const Point2 at = seg.a + (seg.b - seg.a) * ((k + 0.5) / samples);
+        const CorridorSection section = SectionAt(checker, at, normal, clearance, cap, tolerance);
+        width = std::max({width, section.left, section.right});
+      }
+      seg.radius = width + margin;
+      segments.push_back(seg);
+      s += seg.length;
+    }
+  }
+  std::vector<std::pair<double, Point2>> keyed;
+  std::vector<std::pair<Point2, double>> own;  // the seeds' interior vertices and their keys
+  for (const SeedPath& seed : seeds) {
+    const double total = std::max(PathLength(seed.path), 1e-300);
+    double s = 0.0;
+    for (size_t i = 1; i + 1 < seed.path.size(); ++i) {
+      s += (seed.path[i] - seed.path[i - 1]).head<2>().norm();
+      own.push_back({Flat(seed.path[i]), s / total});
+    }
+  }
+  auto is_own = [&](const Point2& v) {
+    for (const auto& [p, key] : own) {
+      if (p == v) return true;
+    }
+    return false;
+  };
+  for (const Point2& v : all) {
+    double best = std::numeric_limits<double>::infinity(), key = 0.0;
+    for (const Segment& seg : segments) {
+      const Point2 ab = seg.b - seg.a;
+      const double t =
+          std::clamp((v - seg.a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+      const double dist = (seg.a + ab * t - v).norm();
+      if (dist <= seg.radius && dist < best) {
+        best = dist;
+        key = (seg.s0 + t * seg.length) / seg.total;
+      }
+    }
+    if (best < std::numeric_limits<double>::infinity() && !is_own(v)) keyed.push_back({key, v});
+  }
+  // The seeds' own vertices: a vertex shared by two seeds keeps the first seed's key.
+  std::vector<std::pair<Point2, double>> unique_own;
+  for (const auto& entry : own) {
+    bool seen = false;
+    for (const auto& u : unique_own) seen = seen || u.first == entry.first;
+    if (!seen) unique_own.push_back(entry);
+  }
+  for (const auto& [p, key] : unique_own) keyed.push_back({key, p});
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  SeededVertices out;
+  for (const auto& [key, v] : keyed) out.vertices.push_back(v);
+  for (const SeedPath& seed : seeds) {
+    std::vector<uint8_t> bits(out.vertices.size(), 0);
+    for (size_t i = 1; i + 1 < seed.path.size(); ++i) {
+      const Point2 v = Flat(seed.path[i]);
+      for (size_t k = 0; k < out.vertices.size(); ++k) {
+        if (out.vertices[k] == v) bits[k] = 1;
+      }
+    }
+    out.patterns.push_back(std::move(bits));
+  }
+  return out;
+}
+
 class BinaryPsoSearch {
  public:
+  // `vertices` in visiting order; `patterns` (init=seeded) the seeds' bit patterns, best first.
   BinaryPsoSearch(const BinaryPsoParams& p, const Problem& problem, std::vector<Point2> vertices,
-                  SegmentBlocked blocked, double penalty)
+                  std::vector<std::vector<uint8_t>> patterns, SegmentBlocked blocked,
+                  double penalty)
       : p_(p),
         problem_(problem),
         blocked_(std::move(blocked)),
         penalty_(penalty),
         rng_(problem.seed),
         start_(problem.start.x(), problem.start.y()),
-        goal_(problem.goal.x(), problem.goal.y()) {
-    // Visiting order: projection on the start-goal line.
-    const Point2 axis = goal_ - start_;
-    const double len2 = std::max(axis.squaredNorm(), 1e-300);
-    std::vector<std::pair<double, Point2>> keyed;
-    for (const Point2& v : vertices) keyed.push_back({(v - start_).dot(axis) / len2, v});
-    std::stable_sort(keyed.begin(), keyed.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [t, v] : keyed) vertices_.push_back(v);
-  }
+        goal_(problem.goal.x(), problem.goal.y()),
+        vertices_(std::move(vertices)),
+        patterns_(std::move(patterns)) {}
 
   SearchResult Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
     const size_t d = vertices_.size();
-    const int n = std::max(1, static_cast<int>(std::ceil(p_.swarm_factor * d)));
+    int n = std::max(1, static_cast<int>(std::ceil(p_.swarm_factor * d)));
+    // init=seeded: the corridors of a long path hold thousands of vertices; the swarm stays
+    // bounded (ours).
+    if (!patterns_.empty())
+      n = std::min(n, std::max(p_.max_swarm, static_cast<int>(patterns_.size())));
     std::vector<std::vector<uint8_t>> bits(n, std::vector<uint8_t>(d));
     std::vector<std::vector<double>> aux(n, std::vector<double>(d)), vel = aux;
+    // init=seeded: the seeds' patterns, then each in turn with about two bits flipped (ours).
+    const double flip = d == 0 ? 0.0 : std::min(0.5, 2.0 / static_cast<double>(d));
     for (int i = 0; i < n; ++i) {
       for (size_t k = 0; k < d; ++k) {
-        bits[i][k] = rng_.Bernoulli(0.5) ? 1 : 0;
-        aux[i][k] = (bits[i][k] ? 1.0 : -1.0) * rng_.Uniform();  // agrees with the bit (ours)
+        if (patterns_.empty()) {
+          bits[i][k] = rng_.Bernoulli(0.5) ? 1 : 0;
+        } else {
+          const size_t base = static_cast<size_t>(i) % patterns_.size();
+          const bool flipped = static_cast<size_t>(i) >= patterns_.size() && rng_.Bernoulli(flip);
+          bits[i][k] = patterns_[base][k] ^ (flipped ? 1 : 0);
+        }
+        // Agrees with the bit (ours); seeded: firmly, so the first update keeps most bits.
+        const double magnitude = patterns_.empty() ? 1.0 : p_.v_max;
+        aux[i][k] = (bits[i][k] ? 1.0 : -1.0) * magnitude * rng_.Uniform();
         vel[i][k] = rng_.Uniform(-1.0, 1.0);
       }
     }
@@ -178,6 +310,7 @@ class BinaryPsoSearch {
   Rng rng_;
   Point2 start_, goal_;
   std::vector<Point2> vertices_;
+  std::vector<std::vector<uint8_t>> patterns_;
   int64_t evaluations_ = 0;
 };
 
@@ -185,7 +318,7 @@ class BinaryPsoSearch {
 
 std::vector<ParamSpec> BinaryPsoParams::Specs() {
   const BinaryPsoParams d;
-  return {
+  std::vector<ParamSpec> specs = {
       ParamSpec::Bool("double_structure", d.double_structure,
                       "continuous assistant positions drive the bits (eqs 6-7); false: plain "
                       "BPSO (eqs 1-2)"),
@@ -206,10 +339,29 @@ std::vector<ParamSpec> BinaryPsoParams::Specs() {
                         "circles become polygons within this fraction of the world's larger side")
           .Ours(),
       ParamSpec::Int("max_vertices", d.max_vertices, 1, 1000000, "vertices",
-                     "refuse maps with more obstacle vertices (swarm and particle both grow "
-                     "with the count)")
+                     "init=paper: refuse maps with more obstacle vertices (swarm and particle "
+                     "both grow with the count)")
+          .Ours(),
+      ParamSpec::Int("max_swarm", d.max_swarm, 1, 1000000, "particles",
+                     "init=seeded: the most particles (swarm_factor x the vertices otherwise)")
+          .Ours(),
+      ParamSpec::Double("corridor_cap", d.corridor_cap, 1e-4, 1.0, "",
+                        "init=seeded: the free width across a seed counted at most, times the "
+                        "map's diagonal")
+          .Ours(),
+      ParamSpec::Double("corridor_margin", d.corridor_margin, 0.0, 1.0, "",
+                        "init=seeded: vertices this far beyond a seed's free width count too, "
+                        "times the map's diagonal")
           .Ours(),
   };
+  AppendParams(specs,
+               SeedingParams("the bits choose among the obstacle vertices near the corridors of "
+                             "exact seed paths (no vertex cap), visited in their order along the "
+                             "nearest seed; the swarm starts from the seeds' patterns and never "
+                             "returns a path longer than the best seed",
+                             "the paper's: one bit per obstacle vertex of the map, visited along "
+                             "the start-goal line, random initial bits, at most max_vertices"));
+  return specs;
 }
 
 BinaryPsoParams BinaryPsoParams::From(const ParamSet& set) {
@@ -226,6 +378,12 @@ BinaryPsoParams BinaryPsoParams::From(const ParamSet& set) {
   p.penalty_factor = set.Double("penalty_factor");
   p.circle_tolerance = set.Double("circle_tolerance");
   p.max_vertices = static_cast<int>(set.Int("max_vertices"));
+  p.max_swarm = static_cast<int>(set.Int("max_swarm"));
+  p.corridor_cap = set.Double("corridor_cap");
+  p.corridor_margin = set.Double("corridor_margin");
+  const WaypointSeeding seeding = WaypointSeedingFrom(set);
+  p.seeded = seeding.seeded;
+  p.seeds = seeding.seeds;
   return p;
 }
 
@@ -255,15 +413,50 @@ absl::StatusOr<SearchResult> BinaryPsoPlanner::Solve(const Problem& problem, con
   } else {
     return absl::InvalidArgumentError("bpso plans on shape worlds and occupancy grids");
   }
-  if (static_cast<int64_t>(vertices.size()) > params_.max_vertices) {
-    return absl::FailedPreconditionError(absl::StrFormat(
-        "bpso: the map has %d obstacle vertices, more than max_vertices = %d; the swarm "
-        "(1.5x the vertices) would be too slow. Raise max_vertices or use another planner",
-        static_cast<int>(vertices.size()), params_.max_vertices));
+  const double penalty = params_.penalty_factor * diagonal;
+  if (!params_.seeded) {
+    if (static_cast<int64_t>(vertices.size()) > params_.max_vertices) {
+      return absl::FailedPreconditionError(absl::StrFormat(
+          "bpso: the map has %d obstacle vertices, more than max_vertices = %d; the swarm "
+          "(1.5x the vertices) would be too slow. Raise max_vertices, use init=seeded or "
+          "another planner",
+          static_cast<int>(vertices.size()), params_.max_vertices));
+    }
+    BinaryPsoSearch search(params_, problem, OrderAlongStartGoal(problem, vertices), {},
+                           std::move(blocked), penalty);
+    return search.Run(stop, observer);
   }
-  BinaryPsoSearch search(params_, problem, std::move(vertices), std::move(blocked),
-                         params_.penalty_factor * diagonal);
-  return search.Run(stop, observer);
+
+  // init=seeded: the vertices near the seeds' corridors; segments checked exactly as the result.
+  absl::StatusOr<std::vector<SeedPath>> seeds =
+      FindSeedPaths(problem, std::max(1, params_.seeds), stop);
+  if (!seeds.ok()) return seeds.status();
+  if (seeds->empty()) return absl::NotFoundError("bpso: no path from start to goal exists");
+  std::shared_ptr<const CollisionChecker> exact = MakeCollisionChecker(*problem.map);
+  const double clearance = problem.clearance;
+  SeededVertices selected =
+      SelectSeededVertices(*seeds, vertices, *exact, clearance, params_.corridor_cap * diagonal,
+                           params_.corridor_margin * diagonal, 1e-4 * diagonal);
+  if (static_cast<int64_t>(selected.vertices.size()) > kMaxSeededBpsoVertices) {
+    return absl::FailedPreconditionError(absl::StrFormat(
+        "bpso: %d obstacle vertices lie near the seed corridors, more than %d; lower "
+        "corridor_cap or use another planner",
+        static_cast<int>(selected.vertices.size()), static_cast<int>(kMaxSeededBpsoVertices)));
+  }
+  SegmentBlocked exact_blocked = [exact, clearance](const Point2& a, const Point2& b) {
+    return !exact->SegmentFree(Point3(a.x(), a.y(), 0), Point3(b.x(), b.y(), 0), clearance);
+  };
+  BinaryPsoSearch search(params_, problem, std::move(selected.vertices),
+                         std::move(selected.patterns), std::move(exact_blocked), penalty);
+  SearchResult result = search.Run(stop, observer);
+  const SeedPath& best = seeds->front();
+  if (!result.found || result.fitness > best.length) {
+    result.path = best.path;  // the best seed is the incumbent: never a longer path
+    result.fitness = best.length;
+    result.found = true;
+  }
+  result.seed_path = best.path;
+  return result;
 }
 
 PlannerInfo BinaryPsoInfo() {
@@ -278,7 +471,11 @@ PlannerInfo BinaryPsoInfo() {
       "plain BPSO with double_structure=false, mutation_probability=0. Swarm 1.5x the vertex "
       "count, c1 = c2 = 2, w 0.9 -> 0.4, 100 iterations. Ours: |v| <= 4, N = 100 x the map "
       "diagonal, a mutated bit's assistant position is negated; on grids the vertices are the "
-      "free cells diagonally outside convex corners of blocked regions.";
+      "free cells diagonally outside convex corners of blocked regions. init=seeded (the default; "
+      "ours): the bits choose among the vertices near the corridors of exact seed paths, visited "
+      "in their order along the nearest seed, the swarm (at most max_swarm) starts from the seeds' "
+      "patterns and the "
+      "best seed is the incumbent; init=paper: the paper's initialisation over every vertex.";
   info.seed_paper = citations::kImprovedBinaryPso;
   info.encoding = Encoding::kVertexSubset;
   info.map_kinds = {MapKind::kShapeWorld, MapKind::kOccupancyGrid};

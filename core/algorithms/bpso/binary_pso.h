@@ -15,6 +15,15 @@ namespace swarmplan {
 // when some segment enters an obstacle. The improved algorithm (default) keeps a continuous
 // assistant position per particle (eqs 6-7) and mutates bits; plain BPSO (eqs 1-2) is
 // double_structure = false with mutation_probability = 0.
+//
+// init=seeded (the parameters' default; ours): the candidate vertices are those near the
+// corridors of `seeds` exact seed paths (FindSeedPaths) — within each segment's free width
+// (capped) plus a margin of the segment, and the seeds' own vertices — ordered by their position
+// along the nearest seed, so the particle's length follows the path, not the map. The swarm
+// (1.5x the vertices, at most max_swarm) starts from the seeds' bit patterns and perturbations of
+// them, the best seed is the incumbent from iteration 0, and the result is never longer than the
+// best seed. init=paper: every vertex of the map, ordered along the start-goal line, random initial
+// bits, refused above max_vertices. A directly constructed planner runs the paper's.
 struct BinaryPsoParams {
   bool double_structure = true;
   double mutation_probability = 0.1;
@@ -27,7 +36,12 @@ struct BinaryPsoParams {
   double v_max = 4.0;               // ours
   double penalty_factor = 100.0;    // N = factor * the map's diagonal (ours: "very large")
   double circle_tolerance = 0.002;  // circles as polygons, times the world's larger side (ours)
-  int max_vertices = 2000;          // more vertices are refused: the swarm grows with them (ours)
+  int max_vertices = 2000;          // init=paper: more vertices are refused (ours)
+  bool seeded = false;              // init=seeded (ours)
+  int seeds = 3;                    // init=seeded: seed paths (ours)
+  int max_swarm = 200;              // init=seeded: the most particles (ours)
+  double corridor_cap = 0.02;       // init=seeded: free width counted, times the diagonal (ours)
+  double corridor_margin = 0.005;   // init=seeded: margin beyond it, times the diagonal (ours)
 
   static std::vector<ParamSpec> Specs();
   static BinaryPsoParams From(const ParamSet& set);
@@ -42,6 +56,9 @@ class BinaryPsoPlanner final : public Planner {
  private:
   BinaryPsoParams params_;
 };
+
+// The most candidate vertices a seeded bpso accepts (FAILED_PRECONDITION beyond).
+inline constexpr int64_t kMaxSeededBpsoVertices = 100000;
 
 PlannerInfo BinaryPsoInfo();
 
