@@ -11,8 +11,9 @@ import sys
 
 COLOURS = {"bso": "#1b9e77", "aem-bso": "#d95f02", "aem-bso-linear": "#7570b3",
            "pso": "#e7298a", "ba": "#66a61e"}
-WIDTH, HEIGHT, LEFT, RIGHT, TOP, BOTTOM = 640, 400, 60, 150, 30, 45
-Y_LOW, Y_HIGH, T_HIGH = 0.95, 1.5, 1.0
+WIDTH, HEIGHT, LEFT, RIGHT, TOP, BOTTOM = 640, 400, 60, 150, 50, 45
+T_HIGH = 1.0
+Y_LOW, Y_HIGH = 0.99, 1.5  # set from the lines by main()
 TIMES = [T_HIGH * i / 100 for i in range(101)]
 
 
@@ -63,32 +64,41 @@ def y_of(v):
 
 
 def main():
+    global Y_LOW, Y_HIGH
     name, out = sys.argv[1], sys.argv[2]
+    drawn = []
+    for mode, dash in (("fleet", ""), ("paper", ' stroke-dasharray="5,4"')):
+        series = runs(out, mode, name)
+        for planner, colour in COLOURS.items():
+            points = median_line(series, planner)
+            if len(points) >= 2:
+                drawn.append((points, colour, dash))
+    values = [v for points, _, _ in drawn for _, v in points if v != float("inf")]
+    if values:
+        Y_LOW = min(0.99, min(values))
+        Y_HIGH = min(1.5, max(1.02, max(values) * 1.01))
+    ticks = [Y_LOW + (Y_HIGH - Y_LOW) * i / 5 for i in range(6)]
     lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" '
              f'font-family="sans-serif" font-size="12">',
              f'<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>',
-             f'<text x="{LEFT}" y="18">{name}: median best / exact optimum '
-             f'(solid: seeded, fleet objective; dashed: paper, length)</text>']
-    for v in (0.95, 1.0, 1.1, 1.2, 1.3, 1.4, 1.5):
+             f'<text x="{LEFT}" y="18">{name}: median best / exact optimum over the runs</text>',
+             f'<text x="{LEFT}" y="34">solid: init=seeded, fleet objective; dashed: '
+             f'init=paper, length (when most runs are feasible)</text>']
+    for v in ticks:
         y = y_of(v)
         lines.append(f'<line x1="{LEFT}" x2="{WIDTH - RIGHT}" y1="{y:.1f}" y2="{y:.1f}" '
                      f'stroke="#ddd"/><text x="{LEFT - 8}" y="{y + 4:.1f}" '
-                     f'text-anchor="end">{v:.2f}</text>')
+                     f'text-anchor="end">{v:.3f}</text>')
     for t in (0.0, 0.25, 0.5, 0.75, 1.0):
         x = x_of(t)
         lines.append(f'<text x="{x:.1f}" y="{HEIGHT - BOTTOM + 16}" text-anchor="middle">'
                      f'{t:g}</text>')
     lines.append(f'<text x="{(LEFT + WIDTH - RIGHT) / 2}" y="{HEIGHT - 8}" '
                  f'text-anchor="middle">seconds from the plan\'s start</text>')
-    for mode, dash in (("fleet", ""), ("paper", ' stroke-dasharray="5,4"')):
-        series = runs(out, mode, name)
-        for planner, colour in COLOURS.items():
-            points = median_line(series, planner)
-            if len(points) < 2:
-                continue
-            path = " ".join(f"{x_of(t):.1f},{y_of(v):.1f}" for t, v in points)
-            lines.append(f'<polyline points="{path}" fill="none" stroke="{colour}" '
-                         f'stroke-width="1.5"{dash}/>')
+    for points, colour, dash in drawn:
+        path = " ".join(f"{x_of(t):.1f},{y_of(v):.1f}" for t, v in points)
+        lines.append(f'<polyline points="{path}" fill="none" stroke="{colour}" '
+                     f'stroke-width="1.5"{dash}/>')
     for i, (planner, colour) in enumerate(COLOURS.items()):
         y = TOP + 16 * i + 10
         lines.append(f'<line x1="{WIDTH - RIGHT + 10}" x2="{WIDTH - RIGHT + 30}" y1="{y}" '
