@@ -33,8 +33,8 @@ struct RunRecord {
   std::optional<double> objective;
   std::optional<double> seed_objective;
   // Seconds from the start of the plan (seed paths included) to the first iteration whose best
-  // is collision-free and, by the planner's fitness, within 1.05 and 1.02 of the optimum (the
-  // fitness is the raw path's length when the objective has no preferences).
+  // is feasible and, by the planner's fitness, within 1.05 and 1.02 of the optimum (the fitness
+  // is the raw path's length only for feasible paths without preference terms).
   std::optional<double> seconds_to_1_05;
   std::optional<double> seconds_to_1_02;
   // Each iteration's best so far, at its seconds from the plan's start.
