@@ -107,6 +107,26 @@ double CubicBezierCurvature(const Point2 p[4], double s) {
   return (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
 }
 
+std::vector<double> FitCornerDistances(const std::vector<double>& wanted,
+                                       const std::vector<double>& segments) {
+  const size_t corners = wanted.size();
+  std::vector<double> d(corners);
+  for (size_t i = 0; i < corners; ++i) d[i] = std::min({wanted[i], segments[i], segments[i + 1]});
+  // Neighbouring corners share segment i + 1: d_i + d_(i+1) <= its length.
+  for (size_t i = 0; i + 1 < corners; ++i) {
+    const double length = segments[i + 1];
+    if (d[i] + d[i + 1] <= length) continue;
+    double& small = d[i] <= d[i + 1] ? d[i] : d[i + 1];
+    double& large = d[i] <= d[i + 1] ? d[i + 1] : d[i];
+    if (small <= 0.5 * length) {
+      large = length - small;
+    } else {
+      small = large = 0.5 * length;
+    }
+  }
+  return d;
+}
+
 BezierResult SmoothWithBezier(const Path& raw, const BezierOptions& options,
                               const CollisionChecker* checker) {
   BezierResult result;
@@ -127,26 +147,13 @@ BezierResult SmoothWithBezier(const Path& raw, const BezierOptions& options,
   for (size_t j = 0; j + 1 < pts.size(); ++j) seg[j] = (pts[j + 1] - pts[j]).norm();
 
   const double wanted_curvature = 1.0 / std::max(options.min_turning_radius, 1e-12);
-  std::vector<double> d(corners);
   std::vector<double> needed(corners);
   for (size_t i = 0; i < corners; ++i) {
     const Point2 u1 = (pts[i] - pts[i + 1]).normalized();
     const Point2 u2 = (pts[i + 2] - pts[i + 1]).normalized();
     needed[i] = BezierDistanceForCurvature(HalfHeadingChange(u1, u2), wanted_curvature);
-    d[i] = std::min({needed[i], seg[i], seg[i + 1]});
   }
-  // Neighbouring corners share segment i + 1: d_i + d_(i+1) <= its length.
-  for (size_t i = 0; i + 1 < corners; ++i) {
-    const double len = seg[i + 1];
-    if (d[i] + d[i + 1] <= len) continue;
-    double& small = d[i] <= d[i + 1] ? d[i] : d[i + 1];
-    double& large = d[i] <= d[i + 1] ? d[i + 1] : d[i];
-    if (small <= 0.5 * len) {
-      large = len - small;
-    } else {
-      small = large = 0.5 * len;
-    }
-  }
+  const std::vector<double> d = FitCornerDistances(needed, seg);
 
   std::vector<BezierCorner> built(corners);
   std::vector<bool> sharp(corners, false);

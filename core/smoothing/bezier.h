@@ -47,6 +47,12 @@ Point2 CubicBezierPoint(const Point2 p[4], double s);
 // Signed curvature of that cubic at s.
 double CubicBezierCurvature(const Point2 p[4], double s);
 
+// The distance d of each corner's curves from its vertex: `wanted` (corner i at the joint of
+// segments i and i + 1), bounded by both segments and shared between neighbouring corners so
+// that their curves never overlap (d_i + d_(i+1) <= segment i + 1).
+std::vector<double> FitCornerDistances(const std::vector<double>& wanted,
+                                       const std::vector<double>& segments);
+
 struct BezierOptions {
   double min_turning_radius = 1.0;  // world units; d is chosen so κ_max = 1 / radius
   int samples_per_curve = 16;       // points per cubic in the output polyline

@@ -54,23 +54,13 @@ class CornerRounding {
   }
   double Segment(size_t j) const { return (pts_[j + 1] - pts_[j]).norm(); }
 
-  // The distance of each corner's curve from its vertex: what the curvature needs, bounded so
-  // that neighbouring curves never overlap.
+  // The distance of each corner's curve from its vertex: what the curvature needs, within the
+  // room the segments leave.
   std::vector<double> Fit() const {
-    std::vector<double> d(corners());
-    for (size_t i = 0; i < corners(); ++i) d[i] = std::min({Needed(i), Segment(i), Segment(i + 1)});
-    for (size_t i = 0; i + 1 < corners(); ++i) {
-      const double length = Segment(i + 1);
-      if (d[i] + d[i + 1] <= length) continue;
-      double& small = d[i] <= d[i + 1] ? d[i] : d[i + 1];
-      double& large = d[i] <= d[i + 1] ? d[i + 1] : d[i];
-      if (small <= 0.5 * length) {
-        large = length - small;
-      } else {
-        small = large = 0.5 * length;
-      }
-    }
-    return d;
+    std::vector<double> needed(corners()), segments(pts_.size() - 1);
+    for (size_t i = 0; i < corners(); ++i) needed[i] = Needed(i);
+    for (size_t j = 0; j < segments.size(); ++j) segments[j] = Segment(j);
+    return FitCornerDistances(needed, segments);
   }
 
   // Corners i and i + 1 turning the same way with too little room between them become one at
