@@ -10,11 +10,7 @@ OUT=${2:-/tmp/convergence}
 HERE=$(cd "$(dirname "$0")" && pwd)
 SHARED=${SHARED_DIR:-$HERE/../../shared/benchmarks}
 BENCH="nice -n 10 $BUILD_DIR/bench/swarmplan-bench"
-PLANNERS=(--planner bso --planner aem-bso --planner aem-bso-linear --planner pso --planner ba)
-PAPER=()
-for p in bso aem-bso aem-bso-linear pso ba; do PAPER+=(--param "$p.init=paper"); done
-COMMON=(--seed 1 --runs 3 --time-budget 1)
-FLEET=(--clearance 0.5 --preferred-clearance 1.5 --turning-radius 2 --smoothing bounded-curvature)
+source "$HERE/waypoint-swarm-settings.sh"
 mkdir -p "$OUT"
 
 source "$HERE/polygon-queries.sh"

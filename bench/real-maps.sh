@@ -5,7 +5,8 @@
 # every shared polygon world (one long query), seeds 1-3, a time budget of 1 s per plan:
 #   length: no preferences (the fleet objective is the length; clearance 0 on grids);
 #   fleet:  clearance 0.5, preferred clearance 1.5, turning radius 2 (world units = cells on
-#           the Moving AI maps), init=seeded only (its path is the swarm's spline; no smoothing).
+#           the Moving AI maps), init=seeded only, bounded-curvature smoothing; compared with
+#           the best seed after the same smoothing.
 # Writes OUT_DIR/{length,paper,fleet}-MAP.csv and OUT_DIR/summary.md (the report's tables).
 #
 # Usage: [MODES="length paper fleet"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
@@ -17,11 +18,7 @@ OUT=${2:-/tmp/real-maps}
 HERE=$(cd "$(dirname "$0")" && pwd)
 SHARED=${SHARED_DIR:-$HERE/../../shared/benchmarks}
 BENCH="nice -n 10 $BUILD_DIR/bench/swarmplan-bench"
-PLANNERS=(--planner bso --planner aem-bso --planner aem-bso-linear --planner pso --planner ba)
-PAPER=()
-for p in bso aem-bso aem-bso-linear pso ba; do PAPER+=(--param "$p.init=paper"); done
-COMMON=(--seed 1 --runs 3 --time-budget 1)
-FLEET=(--clearance 0.5 --preferred-clearance 1.5 --turning-radius 2 --smoothing bounded-curvature)
+source "$HERE/waypoint-swarm-settings.sh"
 MODES=${MODES:-length paper fleet}
 mkdir -p "$OUT"
 # mode NAME: whether NAME is among the MODES to run.
