@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/map/map.h"
+#include "core/problem.h"
 #include "tests/unit/contract_checks.h"
 
 namespace swarmplan::seed_testing {
@@ -27,6 +28,18 @@ inline MapPtr BlockWorld() {
   Polygon block{{{10, 12}, {30, 12}, {30, 18}, {10, 18}}};
   return std::make_shared<const Map>(
       Map::Data(*ShapeWorld::Create({{0, 0}, {40, 30}}, {}, {block})));
+}
+
+// A problem on `map` from start to goal with the clearance, seed 11.
+inline Problem MakeProblem(const MapPtr& map, const Point2& start, const Point2& goal,
+                           double clearance = 0.0) {
+  Problem problem;
+  problem.map = map;
+  problem.start = Point3(start.x(), start.y(), 0);
+  problem.goal = Point3(goal.x(), goal.y(), 0);
+  problem.clearance = clearance;
+  problem.seed = 11;
+  return problem;
 }
 
 inline double Clearance(const Map& map, const Path& path) {

@@ -24,16 +24,7 @@ namespace {
 using seed_testing::BlockWorld;
 using seed_testing::TwoDoorGrid;
 
-Problem MakeProblem(const MapPtr& map, const Point2& start, const Point2& goal,
-                    double clearance = 0.0) {
-  Problem problem;
-  problem.map = map;
-  problem.start = Point3(start.x(), start.y(), 0);
-  problem.goal = Point3(goal.x(), goal.y(), 0);
-  problem.clearance = clearance;
-  problem.seed = 11;
-  return problem;
-}
+using seed_testing::MakeProblem;
 
 absl::StatusOr<PlanResult> Plan(const Problem& problem, const ParamValues& params = {}) {
   PlanRequest request;
