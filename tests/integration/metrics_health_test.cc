@@ -194,6 +194,14 @@ void WriteTokenFile(const std::string& path, mode_t mode) {
   ASSERT_EQ(chmod(path.c_str(), mode), 0);
 }
 
+// The default configuration with the token "s3cret" in a private file under `dir`.
+server::ServerConfig TokenServerConfig(const TempDir& dir) {
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.token_file = dir.path() + "/token";
+  WriteTokenFile(config.token_file, 0600);
+  return config;
+}
+
 constexpr char kReflectionMethod[] =
     "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo";
 // ServerReflectionRequest{list_services: ""}: field 7, length 0.
@@ -221,13 +229,8 @@ TEST(OperationsTest, ReflectionAnswersSymbolQueriesWithTheFileAndItsImports) {
 }
 
 TEST(OperationsTest, ReflectionNeedsTheTokenWhenOneIsSet) {
-  TempDir dir;
-  const std::string token_file = dir.path() + "/token";
-  WriteTokenFile(token_file, 0600);
-  TempDir data;
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.token_file = token_file;
-  TestServer server(data.path(), config);
+  TempDir dir, data;
+  TestServer server(data.path(), TokenServerConfig(dir));
   std::string response;
   EXPECT_EQ(
       RawBidiOnce(*server.channel(), kReflectionMethod, kListServices, &response).error_code(),
@@ -244,13 +247,8 @@ TEST(OperationsTest, ReflectionNeedsTheTokenWhenOneIsSet) {
 }
 
 TEST(OperationsTest, TheBearerSchemeWordIsCaseInsensitiveTheTokenIsNot) {
-  TempDir dir;
-  const std::string token_file = dir.path() + "/token";
-  WriteTokenFile(token_file, 0600);
-  TempDir data;
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.token_file = token_file;
-  TestServer server(data.path(), config);
+  TempDir dir, data;
+  TestServer server(data.path(), TokenServerConfig(dir));
   v1::ListMapsResponse maps;
   for (const std::string value :
        {"Bearer s3cret", "bearer s3cret", "BEARER s3cret", "bEaReR s3cret", "Bearer  s3cret"}) {
@@ -292,13 +290,8 @@ TEST(OperationsTest, AGroupOrWorldReadableTokenFileIsWarnedAbout) {
 }
 
 TEST(OperationsTest, BearerTokenGuardsEveryRpcButHealth) {
-  TempDir dir;
-  const std::string token_file = dir.path() + "/token";
-  WriteTokenFile(token_file, 0600);
-  TempDir data;
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.token_file = token_file;
-  TestServer server(data.path(), config);
+  TempDir dir, data;
+  TestServer server(data.path(), TokenServerConfig(dir));
   v1::ListMapsResponse maps;
   {
     grpc::ClientContext context;
