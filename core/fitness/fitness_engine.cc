@@ -204,6 +204,8 @@ double FitnessEngine::CurvatureTerm(const double* x, const double* y, const doub
     const double denominator = (before * after + ux * vx + uy * vy) * (before + after);
     double curvature = 0.0;
     if (denominator > 0) {
+      // Most turns are below 1 / R: the division only where it may exceed it.
+      if (4.0 * cross <= max_curvature * denominator) continue;
       curvature = 4.0 * cross / denominator;
     } else if (before * after > 0) {
       curvature = kReversalCurvature;
