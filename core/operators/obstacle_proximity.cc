@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "absl/status/status.h"
+#include "core/geometry/distance_transform.h"
 #include "core/geometry/primitives.h"
 
 namespace swarmplan {
@@ -22,6 +23,35 @@ constexpr double kBucketsPerSide = 32.0;
 int FloorToInt(double v) {
   const int i = static_cast<int>(v);
   return v < i ? i - 1 : i;
+}
+
+// Per cell of a w x h label raster, a distance (world units, cell size `cell`) within which
+// every point lies in a cell of the grid with the same label. A cell Y whose label differs from
+// cell c's is reached from c through a line of 8-adjacent cells, the last one of c's label
+// beside a different label ("edge": so are the grid's border cells) and within |Y - c| + 0.71
+// cells of c; so every cell within D - 0.71 of c, D the distance to the nearest edge cell,
+// carries c's label. A point within r of a point of cell c has its cell's centre within
+// r + 1.42 of c's: r = D - 1.5 sqrt(2) cells (less a margin for rounding) holds.
+std::vector<float> SameLabelReach(int w, int h, const std::vector<int32_t>& label, double cell) {
+  std::vector<uint8_t> edge(static_cast<size_t>(w) * h, 0);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      bool is_edge = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+      for (int dy = -1; dy <= 1 && !is_edge; ++dy) {
+        for (int dx = -1; dx <= 1 && !is_edge; ++dx) {
+          is_edge = label[static_cast<size_t>(y + dy) * w + (x + dx)] != label[i];
+        }
+      }
+      edge[i] = is_edge ? 1 : 0;
+    }
+  }
+  const std::vector<double> squared = SquaredDistanceTransform(w, h, edge);
+  std::vector<float> reach(edge.size());
+  for (size_t i = 0; i < edge.size(); ++i) {
+    reach[i] = static_cast<float>((std::sqrt(squared[i]) - 1.5 * std::sqrt(2.0) - 1e-3) * cell);
+  }
+  return reach;
 }
 
 }  // namespace
@@ -136,6 +166,7 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
   }
   p.obstacle_count_ = components;
   p.seen_stamp_.assign(components, 0);
+  p.same_label_reach_ = SameLabelReach(w, h, p.label_, grid->resolution());
   return p;
 }
 
@@ -232,9 +263,23 @@ void ObstacleProximity::VisitGridPoint(const Point2& p, int& count, bool& outsid
 
 void ObstacleProximity::WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count,
                                           bool& outside) {
-  const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() * 4.0 * inv_res_)));
+  const Point2 d = b - a;
+  const int steps = std::max(1, static_cast<int>(std::ceil(d.norm() * 4.0 * inv_res_)));
+  const int w = grid_->width(), h = grid_->height();
   for (int s = 1; s <= steps; ++s) {
-    VisitGridPoint(a + (b - a) * (static_cast<double>(s) / steps), count, outside);
+    const double t = static_cast<double>(s) / steps;
+    const int cx = FloorToInt((a.x() + d.x() * t - lower_.x()) * inv_res_);
+    const int cy = FloorToInt((a.y() + d.y() * t - lower_.y()) * inv_res_);
+    if (cx < 0 || cy < 0 || cx >= w || cy >= h) {
+      outside = true;
+      continue;
+    }
+    const int64_t cell = static_cast<int64_t>(cy) * w + cx;
+    const int32_t label = label_[cell];
+    if (label >= 0 && seen_stamp_[label] != stamp_) {
+      seen_stamp_[label] = stamp_;
+      ++count;
+    }
   }
 }
 
@@ -278,27 +323,42 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
     }
     return count;
   }
-  // Grid: the walk's points lie within half a segment of an end, so their cells' centres lie
-  // within that plus a cell diagonal of an end's cell centre; the grid's distance field is
-  // exact between centres, and only cells closer than the threshold carry labels.
+  // Grid: every point of the walk along a segment lies within half the segment of one end, its
+  // cell's centre within that plus a cell diagonal of the end's cell centre. The segment is not
+  // walked when the grid's distance field (exact between centres; only cells closer than the
+  // threshold carry labels) proves both ends clear, nor when both ends' labels reach unchanged
+  // farther than half the segment (same_label_reach_): the walk would meet only that label,
+  // inside the grid, and it is counted without walking.
   const double margin = threshold_ + grid_->resolution() * (std::sqrt(2.0) + 1e-9);
   const int w = grid_->width(), h = grid_->height();
-  auto clear = [&](int i) {
+  auto cell_of = [&](int i) -> int64_t {
     const int cx = FloorToInt((xs[i] - lower_.x()) * inv_res_);
     const int cy = FloorToInt((ys[i] - lower_.y()) * inv_res_);
-    if (cx < 0 || cy < 0 || cx >= w || cy >= h) return -1.0;
-    return grid_->DistanceToObstacle(cx, cy) - margin;
+    if (cx < 0 || cy < 0 || cx >= w || cy >= h) return -1;
+    return static_cast<int64_t>(cy) * w + cx;
   };
   bool outside = false;
   VisitGridPoint(Point2(xs[0], ys[0]), count, outside);
-  double clear_a = clear(0);
+  int64_t cell_a = cell_of(0);
   for (int i = 0; i + 1 < n; ++i) {
-    const double clear_b = clear(i + 1);
+    const int64_t cell_b = cell_of(i + 1);
     const double half = 0.5 * segment_length[i];
-    if (!(clear_a > half && clear_b > half)) {
+    if (cell_a < 0 || cell_b < 0) {
+      WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
+    } else if (grid_->distance_field()[cell_a] - margin > half &&
+               grid_->distance_field()[cell_b] - margin > half) {
+      // far from every labelled cell
+    } else if (label_[cell_a] == label_[cell_b] && same_label_reach_[cell_a] > half &&
+               same_label_reach_[cell_b] > half) {
+      const int32_t label = label_[cell_a];
+      if (label >= 0 && seen_stamp_[label] != stamp_) {
+        seen_stamp_[label] = stamp_;
+        ++count;
+      }
+    } else {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
     }
-    clear_a = clear_b;
+    cell_a = cell_b;
   }
   return count + (outside ? 1 : 0);
 }

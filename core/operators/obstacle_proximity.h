@@ -68,6 +68,9 @@ class ObstacleProximity {
   std::vector<int32_t> bucket_start_, bucket_items_;
   // OccupancyGrid: per cell the violated component, or -1.
   std::vector<int32_t> label_;
+  // OccupancyGrid: per cell, how far from any point in it every point lies in a cell with its
+  // label (world units; negative near a change of label or the grid's edge).
+  std::vector<float> same_label_reach_;
   // Per obstacle (or component): the stamp of the last call that counted it.
   std::vector<uint32_t> seen_stamp_;
   uint32_t stamp_ = 0;
