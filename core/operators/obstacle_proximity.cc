@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "absl/status/status.h"
+#include "absl/strings/str_format.h"
 #include "core/geometry/distance_transform.h"
 #include "core/geometry/primitives.h"
 
@@ -25,14 +26,14 @@ int FloorToInt(double v) {
   return v < i ? i - 1 : i;
 }
 
-// Per cell of a w x h label raster, a distance (world units, cell size `cell`) within which
-// every point lies in a cell of the grid with the same label. A cell Y whose label differs from
-// cell c's is reached from c through a line of 8-adjacent cells, the last one of c's label
-// beside a different label ("edge": so are the grid's border cells) and within |Y - c| + 0.71
-// cells of c; so every cell within D - 0.71 of c, D the distance to the nearest edge cell,
-// carries c's label. A point within r of a point of cell c has its cell's centre within
-// r + 1.42 of c's: r = D - 1.5 sqrt(2) cells (less a margin for rounding) holds.
-std::vector<float> SameLabelReach(int w, int h, const std::vector<int32_t>& label, double cell) {
+// Per cell of a w x h region raster, a distance (world units, cell size `cell`) within which
+// every point lies in a cell of the same region. A cell Y of another region is reached from c
+// through a line of 8-adjacent cells, the last one of c's region beside a different region
+// ("edge": so are the grid's border cells) and within |Y - c| + 0.71 cells of c; so every cell
+// within D - 0.71 of c, D the distance to the nearest edge cell, lies in c's region. A point
+// within r of a point of cell c has its cell's centre within r + 1.42 of c's:
+// r = D - 1.5 sqrt(2) cells (less a margin for rounding) holds.
+std::vector<float> SameRegionReach(int w, int h, const std::vector<int32_t>& region, double cell) {
   std::vector<uint8_t> edge(static_cast<size_t>(w) * h, 0);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -40,7 +41,7 @@ std::vector<float> SameLabelReach(int w, int h, const std::vector<int32_t>& labe
       bool is_edge = x == 0 || y == 0 || x == w - 1 || y == h - 1;
       for (int dy = -1; dy <= 1 && !is_edge; ++dy) {
         for (int dx = -1; dx <= 1 && !is_edge; ++dx) {
-          is_edge = label[static_cast<size_t>(y + dy) * w + (x + dx)] != label[i];
+          is_edge = region[static_cast<size_t>(y + dy) * w + (x + dx)] != region[i];
         }
       }
       edge[i] = is_edge ? 1 : 0;
@@ -52,6 +53,75 @@ std::vector<float> SameLabelReach(int w, int h, const std::vector<int32_t>& labe
     reach[i] = static_cast<float>((std::sqrt(squared[i]) - 1.5 * std::sqrt(2.0) - 1e-3) * cell);
   }
   return reach;
+}
+
+// Spreads the labels of `seeds` (cells with a label >= 0) by an 8-connected breadth-first sweep
+// to every cell the predicate `enter` admits; cells already labelled keep their label.
+template <class Enter>
+void SpreadLabels(int w, int h, std::vector<int32_t>& label, Enter enter) {
+  std::deque<Cell> queue;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (label[static_cast<size_t>(y) * w + x] >= 0) queue.push_back({x, y});
+    }
+  }
+  while (!queue.empty()) {
+    const Cell c = queue.front();
+    queue.pop_front();
+    const int32_t own = label[static_cast<size_t>(c.y) * w + c.x];
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = c.x + dx, ny = c.y + dy;
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        int32_t& next = label[static_cast<size_t>(ny) * w + nx];
+        if (next >= 0 || !enter(nx, ny)) continue;
+        next = own;
+        queue.push_back({nx, ny});
+      }
+    }
+  }
+}
+
+// The label rasters of ObstacleProximity on a grid for one threshold; shared through the map's
+// derived cache by every search on it.
+ObstacleProximity::GridLabels BuildGridLabels(const OccupancyGrid& grid, double threshold) {
+  ObstacleProximity::GridLabels out;
+  const int w = grid.width(), h = grid.height();
+  out.label.assign(static_cast<size_t>(w) * h, -1);
+  auto index = [w](int x, int y) { return static_cast<size_t>(y) * w + x; };
+  // Components of blocked cells, 8-connected.
+  std::deque<Cell> queue;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!grid.IsBlocked(x, y) || out.label[index(x, y)] >= 0) continue;
+      out.label[index(x, y)] = out.components;
+      queue.push_back({x, y});
+      while (!queue.empty()) {
+        const Cell c = queue.front();
+        queue.pop_front();
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = c.x + dx, ny = c.y + dy;
+            if (!grid.InBounds(nx, ny) || !grid.IsBlocked(nx, ny)) continue;
+            if (out.label[index(nx, ny)] >= 0) continue;
+            out.label[index(nx, ny)] = out.components;
+            queue.push_back({nx, ny});
+          }
+        }
+      }
+      ++out.components;
+    }
+  }
+  // Every cell closer than the threshold takes the label of the component its sweep reaches
+  // first.
+  SpreadLabels(w, h, out.label,
+               [&](int x, int y) { return grid.DistanceToObstacle(x, y) < threshold; });
+  // Regions: the same sweep continued over every cell, so each labelled cell lies in the
+  // region of its own label.
+  out.region = out.label;
+  SpreadLabels(w, h, out.region, [](int, int) { return true; });
+  out.region_reach = SameRegionReach(w, h, out.region, grid.resolution());
+  return out;
 }
 
 }  // namespace
@@ -118,55 +188,11 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
   p.inv_res_ = 1.0 / grid->resolution();
   p.lower_ = grid->origin();
   p.upper_ = grid->origin() + Point2(grid->width(), grid->height()) * grid->resolution();
-  const int w = grid->width(), h = grid->height();
-  p.label_.assign(static_cast<size_t>(w) * h, -1);
-  auto index = [w](int x, int y) { return static_cast<size_t>(y) * w + x; };
-  // Components of blocked cells, 8-connected.
-  std::deque<Cell> queue;
-  int components = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (!grid->IsBlocked(x, y) || p.label_[index(x, y)] >= 0) continue;
-      p.label_[index(x, y)] = components;
-      queue.push_back({x, y});
-      while (!queue.empty()) {
-        const Cell c = queue.front();
-        queue.pop_front();
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = c.x + dx, ny = c.y + dy;
-            if (!grid->InBounds(nx, ny) || !grid->IsBlocked(nx, ny)) continue;
-            if (p.label_[index(nx, ny)] >= 0) continue;
-            p.label_[index(nx, ny)] = components;
-            queue.push_back({nx, ny});
-          }
-        }
-      }
-      ++components;
-    }
-  }
-  // Sweep outward from every blocked cell through the cells closer than the threshold.
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (grid->IsBlocked(x, y)) queue.push_back({x, y});
-    }
-  }
-  while (!queue.empty()) {
-    const Cell c = queue.front();
-    queue.pop_front();
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int nx = c.x + dx, ny = c.y + dy;
-        if (!grid->InBounds(nx, ny) || p.label_[index(nx, ny)] >= 0) continue;
-        if (grid->DistanceToObstacle(nx, ny) >= threshold) continue;
-        p.label_[index(nx, ny)] = p.label_[index(c.x, c.y)];
-        queue.push_back({nx, ny});
-      }
-    }
-  }
-  p.obstacle_count_ = components;
-  p.seen_stamp_.assign(components, 0);
-  p.same_label_reach_ = SameLabelReach(w, h, p.label_, grid->resolution());
+  p.labels_ = map.Derived<GridLabels>(absl::StrFormat("obstacle-labels %.17g", threshold),
+                                      [&] { return BuildGridLabels(*grid, threshold); });
+  p.label_ = p.labels_->label.data();
+  p.obstacle_count_ = p.labels_->components;
+  p.seen_stamp_.assign(p.obstacle_count_, 0);
   return p;
 }
 
@@ -326,11 +352,14 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
   // Grid: every point of the walk along a segment lies within half the segment of one end, its
   // cell's centre within that plus a cell diagonal of the end's cell centre. The segment is not
   // walked when the grid's distance field (exact between centres; only cells closer than the
-  // threshold carry labels) proves both ends clear, nor when both ends' labels reach unchanged
-  // farther than half the segment (same_label_reach_): the walk would meet only that label,
-  // inside the grid, and it is counted without walking.
+  // threshold carry labels) proves both ends clear, nor when both ends lie in one label's
+  // region farther than half the segment from any other region (region_reach): the walk would
+  // meet only that label, inside the grid, so it adds nothing once the label is counted, and
+  // counts it when an end's cell carries it (every vertex's cell is visited by some walk).
   const double margin = threshold_ + grid_->resolution() * (std::sqrt(2.0) + 1e-9);
   const int w = grid_->width(), h = grid_->height();
+  const int32_t* region = labels_->region.data();
+  const float* reach = labels_->region_reach.data();
   auto cell_of = [&](int i) -> int64_t {
     const int cx = FloorToInt((xs[i] - lower_.x()) * inv_res_);
     const int cy = FloorToInt((ys[i] - lower_.y()) * inv_res_);
@@ -348,12 +377,15 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
     } else if (grid_->distance_field()[cell_a] - margin > half &&
                grid_->distance_field()[cell_b] - margin > half) {
       // far from every labelled cell
-    } else if (label_[cell_a] == label_[cell_b] && same_label_reach_[cell_a] > half &&
-               same_label_reach_[cell_b] > half) {
-      const int32_t label = label_[cell_a];
+    } else if (region[cell_a] == region[cell_b] && reach[cell_a] > half && reach[cell_b] > half) {
+      const int32_t label = region[cell_a];
       if (label >= 0 && seen_stamp_[label] != stamp_) {
-        seen_stamp_[label] = stamp_;
-        ++count;
+        if (label_[cell_a] == label || label_[cell_b] == label) {
+          seen_stamp_[label] = stamp_;
+          ++count;
+        } else {
+          WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
+        }
       }
     } else {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -13,7 +14,8 @@ namespace swarmplan {
 // are exact segment distances. On an OccupancyGrid an obstacle is a connected component
 // (8-connected) of blocked cells; every cell closer than the threshold to a blocked cell (by the
 // grid's distance field) carries the label of the component reached first by a breadth-first
-// sweep from all blocked cells, computed once here; segments are walked at a quarter cell.
+// sweep from all blocked cells, computed once per map and threshold; segments are walked at a
+// quarter cell.
 // Leaving the map counts as one more obstacle. Built once per search; CountViolations reuses
 // its buffers (no allocation). On a ShapeWorld a bucket grid over the bounds, built here, lists
 // per bucket the obstacles whose box grown by the threshold overlaps it, so each segment is
@@ -36,6 +38,21 @@ class ObstacleProximity {
   Point2 lower() const { return lower_; }
   Point2 upper() const { return upper_; }
   int obstacle_count() const { return obstacle_count_; }
+
+  // The rasters of a grid for one threshold, built once per (map, threshold) and kept in the
+  // map's derived cache.
+  struct GridLabels {
+    int components = 0;
+    // Per cell the component closer than the threshold (the first reached by a breadth-first
+    // sweep from every blocked cell), or -1.
+    std::vector<int32_t> label;
+    // Per cell the label whose sweep, continued over the whole grid, reached it first: each
+    // labelled cell lies in its own label's region (-1 everywhere on a grid without obstacles).
+    std::vector<int32_t> region;
+    // Per cell, how far from any point in it every point lies in a cell of its region (world
+    // units; negative near a change of region or the grid's edge).
+    std::vector<float> region_reach;
+  };
 
  private:
   ObstacleProximity() = default;
@@ -66,11 +83,9 @@ class ObstacleProximity {
   double bucket_inv_size_ = 1.0;
   int buckets_x_ = 0, buckets_y_ = 0;
   std::vector<int32_t> bucket_start_, bucket_items_;
-  // OccupancyGrid: per cell the violated component, or -1.
-  std::vector<int32_t> label_;
-  // OccupancyGrid: per cell, how far from any point in it every point lies in a cell with its
-  // label (world units; negative near a change of label or the grid's edge).
-  std::vector<float> same_label_reach_;
+  // OccupancyGrid: the rasters, and their labels.
+  std::shared_ptr<const GridLabels> labels_;
+  const int32_t* label_ = nullptr;
   // Per obstacle (or component): the stamp of the last call that counted it.
   std::vector<uint32_t> seen_stamp_;
   uint32_t stamp_ = 0;
