@@ -55,7 +55,7 @@ std::vector<float> SameRegionReach(int w, int h, const std::vector<int32_t>& reg
   return reach;
 }
 
-// Spreads the labels of `seeds` (cells with a label >= 0) by an 8-connected breadth-first sweep
+// Spreads the labels of the labelled cells (label >= 0) by an 8-connected breadth-first sweep
 // to every cell the predicate `enter` admits; cells already labelled keep their label.
 template <class Enter>
 void SpreadLabels(int w, int h, std::vector<int32_t>& label, Enter enter) {
@@ -280,32 +280,15 @@ void ObstacleProximity::VisitGridPoint(const Point2& p, int& count, bool& outsid
     outside = true;
     return;
   }
-  const int32_t label = label_[static_cast<size_t>(cy) * grid_->width() + cx];
-  if (label >= 0 && seen_stamp_[label] != stamp_) {
-    seen_stamp_[label] = stamp_;
-    ++count;
-  }
+  CountObstacle(label_[static_cast<size_t>(cy) * grid_->width() + cx], count);
 }
 
 void ObstacleProximity::WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count,
                                           bool& outside) {
   const Point2 d = b - a;
   const int steps = std::max(1, static_cast<int>(std::ceil(d.norm() * 4.0 * inv_res_)));
-  const int w = grid_->width(), h = grid_->height();
   for (int s = 1; s <= steps; ++s) {
-    const double t = static_cast<double>(s) / steps;
-    const int cx = FloorToInt((a.x() + d.x() * t - lower_.x()) * inv_res_);
-    const int cy = FloorToInt((a.y() + d.y() * t - lower_.y()) * inv_res_);
-    if (cx < 0 || cy < 0 || cx >= w || cy >= h) {
-      outside = true;
-      continue;
-    }
-    const int64_t cell = static_cast<int64_t>(cy) * w + cx;
-    const int32_t label = label_[cell];
-    if (label >= 0 && seen_stamp_[label] != stamp_) {
-      seen_stamp_[label] = stamp_;
-      ++count;
-    }
+    VisitGridPoint(a + d * (static_cast<double>(s) / steps), count, outside);
   }
 }
 
@@ -381,8 +364,7 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
       const int32_t label = region[cell_a];
       if (label >= 0 && seen_stamp_[label] != stamp_) {
         if (label_[cell_a] == label || label_[cell_b] == label) {
-          seen_stamp_[label] = stamp_;
-          ++count;
+          CountObstacle(label, count);
         } else {
           WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
         }

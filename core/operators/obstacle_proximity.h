@@ -64,6 +64,13 @@ class ObstacleProximity {
   void VisitGridPoint(const Point2& p, int& count, bool& outside);
   // The quarter-cell walk along (a, b].
   void WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count, bool& outside);
+  // Counts obstacle (or component) k unless it is -1 or already counted in this call.
+  void CountObstacle(int32_t k, int& count) {
+    if (k >= 0 && seen_stamp_[k] != stamp_) {
+      seen_stamp_[k] = stamp_;
+      ++count;
+    }
+  }
   // A fresh stamp for seen_stamp_: marks from earlier calls no longer count.
   void NextStamp();
   // The bucket range (clamped to the grid) covering the box [lo, hi].
