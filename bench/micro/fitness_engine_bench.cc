@@ -22,11 +22,13 @@
 #include "core/map/generate.h"
 #include "core/map/io/map_io.h"
 #include "core/operators/path_search_planner.h"
+#include "core/operators/seeded_waypoint_objective.h"
 #include "core/operators/waypoint_objective.h"
 #include "core/operators/waypoint_params.h"
 #include "core/path_metrics.h"
 #include "core/random.h"
 #include "core/registry.h"
+#include "core/seeds/seed_paths.h"
 
 namespace swarmplan::bench {
 namespace {
@@ -149,6 +151,57 @@ void FitnessArgs(benchmark::internal::Benchmark* b) {
   }
 }
 BENCHMARK(BM_Fitness)->Apply(FitnessArgs);
+
+// The seeded objective of the fleet setting on Berlin_0_256's longest scenario, the decision
+// space a seeded swarm searches (3 seeds, up to 64 control points, a point every half cell):
+// vectors drawn uniformly in the box with the offsets scaled by 0.05, 0.2 and 1 in turn, like
+// a population from its start to its end. Arg: 1 = the fleet objective, 0 = the papers'
+// penalty. Items per second = evaluations per CPU second; `points` = points per path.
+void BM_SeededFitness(benchmark::State& state) {
+  const FitnessCase& c = Case(4);
+  absl::StatusOr<std::vector<Scenario>> scenarios =
+      LoadScenarioFile(SharedBenchmarks() + "/movingai/Berlin_0_256.map.scen");
+  if (c.map == nullptr || !scenarios.ok() || scenarios->empty()) {
+    state.SkipWithError("shared benchmark map not found");
+    return;
+  }
+  const bool fleet = state.range(0) == 1;
+  const Scenario& s = scenarios->back();
+  Problem problem = CaseProblem(c, fleet ? 0.5 : 0.0);
+  const Point2 start = c.map->grid()->CellCenter(s.start);
+  const Point2 goal = c.map->grid()->CellCenter(s.goal);
+  problem.start = Point3(start.x(), start.y(), 0);
+  problem.goal = Point3(goal.x(), goal.y(), 0);
+  WaypointFitnessOptions options;
+  if (fleet) options.fleet = FleetSetting();
+  const std::vector<SeedPath> seeds = ValueOrDie(FindSeedPaths(problem, 3, StopToken()));
+  auto objective =
+      ValueOrDie(SeededWaypointObjective::Create(problem, options, seeds, kMaxSeededControlPoints));
+  Rng rng(7);
+  std::vector<Eigen::VectorXd> columns(kVectors);
+  for (int j = 0; j < kVectors; ++j) {
+    const double scale = j % 3 == 0 ? 0.05 : j % 3 == 1 ? 0.2 : 1.0;
+    Eigen::VectorXd& x = columns[j];
+    x.resize(objective->dim());
+    x[0] = rng.Uniform(0.0, objective->upper()[0]);
+    for (int d = 1; d < x.size(); ++d) x[d] = scale * rng.Uniform(-1.0, 1.0);
+  }
+  int64_t evaluations = 0, feasible = 0;
+  int j = 0;
+  for (auto _ : state) {
+    feasible += objective->Evaluate(columns[j]).feasible ? 1 : 0;
+    ++evaluations;
+    j = (j + 1) % kVectors;
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(evaluations);
+  state.counters["feasible"] =
+      benchmark::Counter(static_cast<double>(feasible) / std::max<int64_t>(1, evaluations));
+  state.counters["points"] = static_cast<double>(objective->Decode(columns[0]).size());
+  state.counters["control_points"] = objective->control_points();
+  state.SetLabel(fleet ? "seeded, fleet" : "seeded, papers' penalty");
+}
+BENCHMARK(BM_SeededFitness)->Arg(1)->Arg(0);
 
 // aem-bso with its defaults on Berlin_0_256, a long scenario of the last bucket: evaluations per
 // CPU second of the whole run (search, bookkeeping, decoding and the final check). Arg: 0 =

@@ -8,24 +8,11 @@
 namespace swarmplan {
 namespace {
 
-// Path points held per batch: bounds the point buffers whatever the sample count.
-constexpr int64_t kBatchPoints = 1 << 14;
 // How far (field cells) the fleet objective's shortfall below the hard clearance starts below
 // it, so that a path along an obstacle's boundary costs nothing for the raster's error.
 constexpr double kHardSlackCells = 2.0;
 // The curvature of an exact reversal, where the discrete formula divides by zero.
 constexpr double kReversalCurvature = 1e9;
-
-DistanceField GridDistanceField(const OccupancyGrid& grid) {
-  std::vector<uint8_t> blocked(static_cast<size_t>(grid.width()) * grid.height());
-  for (int y = 0; y < grid.height(); ++y) {
-    for (int x = 0; x < grid.width(); ++x) {
-      blocked[static_cast<size_t>(y) * grid.width() + x] = grid.IsBlocked(x, y) ? 1 : 0;
-    }
-  }
-  return DistanceField::FromBlockedCells(grid.width(), grid.height(), blocked, grid.resolution(),
-                                         grid.origin(), /*cap_at_edge=*/false);
-}
 
 }  // namespace
 
@@ -42,22 +29,25 @@ absl::StatusOr<FitnessEngine> FitnessEngine::Create(const Problem& problem,
   if (options.fleet) {
     if (absl::Status status = ValidateFleetObjective(*options.fleet); !status.ok()) return status;
   }
+  if (!options.knot_parameters.empty()) {
+    const std::vector<double>& t = options.knot_parameters;
+    if (static_cast<int>(t.size()) != options.waypoints + 2) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "waypoint objective: knot_parameters needs waypoints + 2 = ", options.waypoints + 2,
+          " values, got ", t.size()));
+    }
+    for (size_t i = 0; i + 1 < t.size(); ++i) {
+      if (!(t[i + 1] > t[i]) || !std::isfinite(t[i + 1] - t[i])) {
+        return absl::InvalidArgumentError(
+            "waypoint objective: knot_parameters must be finite and increasing");
+      }
+    }
+  }
   absl::StatusOr<ObstacleProximity> proximity = ObstacleProximity::Create(
       *problem.map,
       options.fleet ? problem.clearance : std::max(options.d_safe, problem.clearance));
   if (!proximity.ok()) return proximity.status();
-  FitnessEngine engine(problem, options, *std::move(proximity));
-  if (options.fleet) {
-    if (const ShapeWorld* world = problem.map->world()) {
-      engine.field_ = &world->distance_field();
-    } else {
-      const Map& map = *problem.map;
-      engine.owned_field_ = map.Derived<DistanceField>(
-          "fitness-distance-field", [&map] { return GridDistanceField(*map.grid()); });
-      engine.field_ = engine.owned_field_.get();
-    }
-  }
-  return engine;
+  return FitnessEngine(problem, options, *std::move(proximity));
 }
 
 FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOptions& options,
@@ -67,65 +57,73 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
       penalty_(options.penalty),
       fleet_(options.fleet),
       hard_clearance_(problem.clearance),
-      matrix_(CachedInterpolationMatrix(options.interpolation, options.waypoints, options.samples)),
+      basis_(
+          options.knot_parameters.empty()
+              ? CachedInterpolationBasis(options.interpolation, options.waypoints, options.samples)
+              : std::make_shared<const InterpolationBasis>(
+                    options.interpolation, options.knot_parameters, options.samples)),
       proximity_(std::move(proximity)) {
-  const int k = waypoints_;
-  const int n = matrix_->points();
-  weights_x_ = matrix_->x.middleCols(1, k);
-  weights_y_ = matrix_->y.middleCols(1, k);
-  offset_x_ = matrix_->x.col(0) * problem.start.x() + matrix_->x.col(k + 1) * problem.goal.x();
-  offset_y_ = matrix_->y.col(0) * problem.start.y() + matrix_->y.col(k + 1) * problem.goal.y();
-  const int batch = static_cast<int>(std::clamp<int64_t>(kBatchPoints / n, 1, 64));
-  points_x_.resize(n, batch);
-  points_y_.resize(n, batch);
-  segment_.resize(n);
-  clearance_.resize(n);
+  const int knots = waypoints_ + 2;
+  const int n = basis_->points();
+  knot_x_.assign(knots, 0.0);
+  knot_y_.assign(knots, 0.0);
+  knot_x_.front() = problem.start.x();
+  knot_y_.front() = problem.start.y();
+  knot_x_.back() = problem.goal.x();
+  knot_y_.back() = problem.goal.y();
+  moments_.resize(2 * knots);
+  points_x_.resize(n);
+  points_y_.resize(n);
+  Reserve(n);
 }
 
-void FitnessEngine::Interpolate(const Eigen::Ref<const Eigen::MatrixXd>& xs, int first, int count) {
+void FitnessEngine::Reserve(int n) {
+  if (static_cast<int>(segment_.size()) >= n) return;
+  segment_.resize(n);
+  clearance_.resize(n);
+  cell_.resize(n);
+  cell_value_.resize(n);
+}
+
+void FitnessEngine::Interpolate(const double* x) {
   const int k = waypoints_;
-  auto px = points_x_.leftCols(count);
-  auto py = points_y_.leftCols(count);
-  px.noalias() = weights_x_ * xs.block(0, first, k, count);
-  py.noalias() = weights_y_ * xs.block(k, first, k, count);
-  px.colwise() += offset_x_;
-  py.colwise() += offset_y_;
+  std::copy(x, x + k, knot_x_.begin() + 1);
+  std::copy(x + k, x + 2 * k, knot_y_.begin() + 1);
+  basis_->Apply(knot_x_.data(), knot_y_.data(), points_x_.data(), points_y_.data(),
+                moments_.data());
 }
 
 void FitnessEngine::Evaluate(const Eigen::Ref<const Eigen::MatrixXd>& xs, Evaluation* out) {
-  const int total = static_cast<int>(xs.cols());
-  const int batch = static_cast<int>(points_x_.cols());
-  for (int first = 0; first < total; first += batch) {
-    const int count = std::min(batch, total - first);
-    Interpolate(xs, first, count);
-    for (int j = 0; j < count; ++j) out[first + j] = EvaluatePath(j, nullptr);
-  }
+  for (Eigen::Index j = 0; j < xs.cols(); ++j) out[j] = Evaluate(xs.col(j).data());
 }
 
-Evaluation FitnessEngine::Evaluate(const Eigen::VectorXd& x) {
-  Interpolate(x, 0, 1);
-  return EvaluatePath(0, nullptr);
+Evaluation FitnessEngine::Evaluate(const double* x) {
+  Interpolate(x);
+  return EvaluatePath(nullptr);
 }
 
 FleetTerms FitnessEngine::Terms(const Eigen::VectorXd& x) {
   FleetTerms terms;
-  Interpolate(x, 0, 1);
-  EvaluatePath(0, &terms);
+  Interpolate(x.data());
+  EvaluatePath(&terms);
   return terms;
 }
 
 void FitnessEngine::Decode(const Eigen::VectorXd& x, Path& path) const {
   const int k = waypoints_;
-  const Eigen::VectorXd px = weights_x_ * x.head(k) + offset_x_;
-  const Eigen::VectorXd py = weights_y_ * x.tail(k) + offset_y_;
+  std::vector<double> kx = knot_x_, ky = knot_y_, moments(moments_.size());
+  std::copy(x.data(), x.data() + k, kx.begin() + 1);
+  std::copy(x.data() + k, x.data() + 2 * k, ky.begin() + 1);
+  std::vector<double> px(points_x_.size()), py(points_y_.size());
+  basis_->Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
   path.resize(px.size());
-  for (int i = 0; i < px.size(); ++i) path[i] = Point3(px[i], py[i], 0.0);
+  for (size_t i = 0; i < px.size(); ++i) path[i] = Point3(px[i], py[i], 0.0);
 }
 
-Evaluation FitnessEngine::EvaluatePath(int column, FleetTerms* terms) {
-  const double* x = points_x_.col(column).data();
-  const double* y = points_y_.col(column).data();
-  const int n = static_cast<int>(points_x_.rows());
+Evaluation FitnessEngine::EvaluatePath(FleetTerms* terms) {
+  const double* x = points_x_.data();
+  const double* y = points_y_.data();
+  const int n = static_cast<int>(points_x_.size());
   double length = 0.0;
   for (int i = 0; i + 1 < n; ++i) {
     const double dx = x[i + 1] - x[i], dy = y[i + 1] - y[i];
@@ -135,15 +133,36 @@ Evaluation FitnessEngine::EvaluatePath(int column, FleetTerms* terms) {
   return fleet_ ? Fleet(x, y, length, terms) : PaperPenalty(x, y, length);
 }
 
+void FitnessEngine::LocatePoints(const double* x, const double* y, int n, bool bilinear) {
+  const DistanceField& field = proximity_.field();
+  const double inv = field.inverse_cell_size();
+  const double ox = field.origin().x(), oy = field.origin().y();
+  const unsigned w = static_cast<unsigned>(field.width()),
+                 h = static_cast<unsigned>(field.height());
+  const float* values = field.values();
+  for (int i = 0; i < n; ++i) {
+    // The same arithmetic as ObstacleProximity::FieldCell.
+    const double u = (x[i] - ox) * inv, v = (y[i] - oy) * inv;
+    const int cx = ObstacleProximity::FloorToInt(u), cy = ObstacleProximity::FloorToInt(v);
+    const bool inside = static_cast<unsigned>(cx) < w && static_cast<unsigned>(cy) < h;
+    const int32_t cell = inside ? cy * static_cast<int32_t>(w) + cx : -1;
+    cell_[i] = cell;
+    cell_value_[i] = inside ? values[cell] : 0.0f;
+    if (bilinear) clearance_[i] = field.BilinearAtGrid(u, v);
+  }
+}
+
 Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double length) {
-  const int n = static_cast<int>(points_x_.rows());
-  const int violations = proximity_.CountViolationsScreened(x, y, segment_.data(), n);
+  const int n = static_cast<int>(points_x_.size());
+  LocatePoints(x, y, n, /*bilinear=*/false);
+  const int violations = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
+                                                            cell_value_.data(), n);
   return {length * (1.0 + penalty_ * violations), violations == 0};
 }
 
 Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
                                 FleetTerms* terms) {
-  const int n = static_cast<int>(points_x_.rows());
+  const int n = static_cast<int>(points_x_.size());
   FleetTerms t = ClearanceTerms(x, y, n, length);
   t.curvature = CurvatureTerm(x, y, segment_.data(), n);
   if (terms != nullptr) *terms = t;
@@ -153,24 +172,25 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
 FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n, double length) {
   const FleetObjective& f = *fleet_;
   const Point2 lo = proximity_.lower(), hi = proximity_.upper();
-  // Pass 1: the clearance at every point and the shortfalls, each point weighted by half of
-  // each segment beside it.
+  LocatePoints(x, y, n, /*bilinear=*/true);
+  const DistanceField& field = proximity_.field();
+  // Each point weighted by half of each segment beside it.
   double shortfall = 0.0, violation = 0.0;
   bool outside = false;
   for (int i = 0; i < n; ++i) {
-    clearance_[i] = field_->Bilinear(x[i], y[i]);
     outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
   }
   // The conservative raster may read a point on an obstacle's boundary up to about 1.5 cells
   // inside it: the shortfall below the hard clearance counts beyond kHardSlackCells only, and
   // the exact count below decides feasibility.
-  const double hard = hard_clearance_ - kHardSlackCells * field_->cell_size();
+  const double hard = hard_clearance_ - kHardSlackCells * field.cell_size();
   for (int i = 0; i < n; ++i) {
     const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
     shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;
     violation += std::max(0.0, hard - clearance_[i]) * ds;
   }
-  const int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), n);
+  const int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
+                                                           cell_value_.data(), n);
   violation += length * obstacles;
   if (outside) {
     for (int i = 0; i < n; ++i) {
@@ -219,7 +239,7 @@ FleetTerms FitnessEngine::PathTerms(const Path& path) {
   if (path.size() < 2) return {};
   // The clearance terms at points at most half a field cell apart, the path's vertices among
   // them; the curvature at the path's own vertices.
-  const double spacing = 0.5 * field_->cell_size();
+  const double spacing = 0.5 * proximity_.field().cell_size();
   std::vector<double> x, y, vertex_x, vertex_y, vertex_segment;
   for (size_t i = 0; i < path.size(); ++i) {
     vertex_x.push_back(path[i].x());
@@ -236,8 +256,7 @@ FleetTerms FitnessEngine::PathTerms(const Path& path) {
   x.push_back(path.back().x());
   y.push_back(path.back().y());
   const int n = static_cast<int>(x.size());
-  if (segment_.size() < x.size()) segment_.resize(x.size());
-  if (clearance_.size() < x.size()) clearance_.resize(x.size());
+  Reserve(n);
   double length = 0.0;
   for (int i = 0; i + 1 < n; ++i) {
     segment_[i] = std::hypot(x[i + 1] - x[i], y[i + 1] - y[i]);

@@ -7,7 +7,7 @@
 
 #include "absl/status/statusor.h"
 #include "core/fitness/fleet_objective.h"
-#include "core/fitness/interpolation_matrix.h"
+#include "core/fitness/interpolation_basis.h"
 #include "core/map/distance_field.h"
 #include "core/operators/objective.h"
 #include "core/operators/obstacle_proximity.h"
@@ -23,12 +23,16 @@ struct WaypointFitnessOptions {
   double d_safe = 1.5;   // the safety distance; the problem's clearance when larger
   // When set, the fleet objective replaces the papers' L (1 + M xi).
   std::optional<FleetObjective> fleet;
+  // The spline's parameter at each knot, start and goal included (waypoints + 2 increasing
+  // values); empty: 0, 1, 2, ... as the papers' paths have it.
+  std::vector<double> knot_parameters;
 };
 
 // The fitness of 2D waypoint paths, shared by every waypoint planner. A decision vector
-// [x1..xk, y1..yk] becomes the path start -> waypoints -> goal by one product with the cached
-// InterpolationMatrix (no spline solve), for a whole population at once (the columns of a
-// matrix). Then, per path, one pass over its points:
+// [x1..xk, y1..yk] becomes the path start -> waypoints -> goal through the cached
+// InterpolationBasis (each point a local combination of the knots and, for the spline, of their
+// second derivatives from one tridiagonal sweep): O(k + points) per path. Then one pass over
+// its points:
 // - the papers' z = L (1 + M xi) (AEM-BSO eq 21): xi from ObstacleProximity's screened count,
 //   which reads the map's distance field once per point and tests exactly only the segments
 //   near an obstacle, so xi is the reference count; feasible when xi = 0;
@@ -43,12 +47,14 @@ class FitnessEngine {
 
   int waypoints() const { return waypoints_; }
   // Points of each decoded path.
-  int points() const { return matrix_->points(); }
+  int points() const { return basis_->points(); }
   const ObstacleProximity& proximity() const { return proximity_; }
 
   // out[j] = the fitness of column j of xs (2k rows).
   void Evaluate(const Eigen::Ref<const Eigen::MatrixXd>& xs, Evaluation* out);
-  Evaluation Evaluate(const Eigen::VectorXd& x);
+  Evaluation Evaluate(const Eigen::VectorXd& x) { return Evaluate(x.data()); }
+  // The fitness of the waypoints x[0..2k).
+  Evaluation Evaluate(const double* x);
   // The fleet objective's terms for x (the engine must have been created with a fleet).
   FleetTerms Terms(const Eigen::VectorXd& x);
   // The fleet objective's terms for any path (fleet engines only): the clearance terms read at
@@ -60,10 +66,15 @@ class FitnessEngine {
  private:
   FitnessEngine(const Problem& problem, const WaypointFitnessOptions& options,
                 ObstacleProximity proximity);
-  // Fills the point buffers' first `count` columns from xs.middleCols(first, count).
-  void Interpolate(const Eigen::Ref<const Eigen::MatrixXd>& xs, int first, int count);
-  // Column j of the point buffers: segment lengths, then the objective.
-  Evaluation EvaluatePath(int column, FleetTerms* terms);
+  // Fills the point buffers with the path of the waypoints x[0..2k).
+  void Interpolate(const double* x);
+  // The path in the point buffers: segment lengths, then the objective.
+  Evaluation EvaluatePath(FleetTerms* terms);
+  // Sizes the per-point buffers for paths of n points.
+  void Reserve(int n);
+  // Fills cell_ and cell_value_ for the n points (the screen of the exact count) and, when
+  // `bilinear`, clearance_ with the field's bilinear value at each.
+  void LocatePoints(const double* x, const double* y, int n, bool bilinear);
   Evaluation PaperPenalty(const double* x, const double* y, double length);
   Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms);
   // Length, clearance and violation terms of the n points (segment_ holds their segments); sets
@@ -77,18 +88,16 @@ class FitnessEngine {
   double penalty_;
   std::optional<FleetObjective> fleet_;
   double hard_clearance_;
-  std::shared_ptr<const InterpolationMatrix> matrix_;
-  // The interior columns of the matrix (the waypoints' weights) and the start's and goal's
-  // fixed contribution.
-  Eigen::MatrixXd weights_x_, weights_y_;
-  Eigen::VectorXd offset_x_, offset_y_;
+  std::shared_ptr<const InterpolationBasis> basis_;
+  // The knots start, waypoints, goal per coordinate, and the basis's scratch.
+  std::vector<double> knot_x_, knot_y_, moments_;
   ObstacleProximity proximity_;
-  const DistanceField* field_ = nullptr;
-  std::shared_ptr<const DistanceField> owned_field_;  // a grid's, cached with the map
-  Eigen::MatrixXd points_x_, points_y_;               // (points) x (batch) buffers
-  std::vector<double> segment_;                       // segment lengths of one path
-  std::vector<double> clearance_;                     // the field at its points (fleet objective)
-  bool feasible_ = false;                             // of the last ClearanceTerms
+  std::vector<double> points_x_, points_y_;  // the path being evaluated
+  std::vector<double> segment_;              // segment lengths of one path
+  std::vector<double> clearance_;            // the field at its points (fleet objective)
+  std::vector<int32_t> cell_;                // their cells in the proximity's field
+  std::vector<float> cell_value_;            // and the field's value there
+  bool feasible_ = false;                    // of the last ClearanceTerms
 };
 
 }  // namespace swarmplan

@@ -42,14 +42,18 @@ class DistanceField {
   const float* values() const { return values_.data(); }
   // Bilinear interpolation between the cell centres, clamped to the field: continuous in p.
   double Bilinear(double x, double y) const {
-    const double gx = std::clamp((x - origin_.x()) * inv_cell_ - 0.5, 0.0, width_ - 1.0);
-    const double gy = std::clamp((y - origin_.y()) * inv_cell_ - 0.5, 0.0, height_ - 1.0);
+    return BilinearAtGrid((x - origin_.x()) * inv_cell_, (y - origin_.y()) * inv_cell_);
+  }
+  // The same at grid coordinates (u, v) = (p - origin) / cell size.
+  double BilinearAtGrid(double u, double v) const {
+    const double gx = std::clamp(u - 0.5, 0.0, width_ - 1.0);
+    const double gy = std::clamp(v - 0.5, 0.0, height_ - 1.0);
     const int ix = std::min(static_cast<int>(gx), last_x_);
     const int iy = std::min(static_cast<int>(gy), last_y_);
     const double tx = gx - ix, ty = gy - iy;
-    const float* v = values_.data() + static_cast<size_t>(iy) * width_ + ix;
-    const double bottom = v[0] + tx * (v[step_x_] - v[0]);
-    const double top = v[step_y_] + tx * (v[step_y_ + step_x_] - v[step_y_]);
+    const float* p = values_.data() + static_cast<size_t>(iy) * width_ + ix;
+    const double bottom = p[0] + tx * (p[step_x_] - p[0]);
+    const double top = p[step_y_] + tx * (p[step_y_ + step_x_] - p[step_y_]);
     return bottom + ty * (top - bottom);
   }
 

@@ -20,10 +20,17 @@ bool BoxesOverlap(const Point2& amin, const Point2& amax, const Point2& bmin, co
 // The obstacle buckets per side of the bounds' larger dimension.
 constexpr double kBucketsPerSide = 32.0;
 
-// floor(v) as an int without a libm call (v within the int range).
-int FloorToInt(double v) {
-  const int i = static_cast<int>(v);
-  return v < i ? i - 1 : i;
+// The signed distance field of a grid's blocked cells, cell for cell: a free cell's value is
+// the grid's own distance at it less half a cell, rounded to float.
+DistanceField GridSignedDistanceField(const OccupancyGrid& grid) {
+  std::vector<uint8_t> blocked(static_cast<size_t>(grid.width()) * grid.height());
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      blocked[static_cast<size_t>(y) * grid.width() + x] = grid.IsBlocked(x, y) ? 1 : 0;
+    }
+  }
+  return DistanceField::FromBlockedCells(grid.width(), grid.height(), blocked, grid.resolution(),
+                                         grid.origin(), /*cap_at_edge=*/false);
 }
 
 // Per cell of a w x h region raster, a distance (world units, cell size `cell`) within which
@@ -131,6 +138,7 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
   p.threshold_ = threshold;
   if (const ShapeWorld* world = map.world()) {
     p.world_ = world;
+    p.field_ = &world->distance_field();
     p.lower_ = world->bounds().min;
     p.upper_ = world->bounds().max;
     for (const Circle& circle : world->circles()) {
@@ -185,6 +193,9 @@ absl::StatusOr<ObstacleProximity> ObstacleProximity::Create(const Map& map, doub
     return absl::FailedPreconditionError("obstacle proximity: needs a 2D map, not a terrain");
   }
   p.grid_ = grid;
+  p.grid_field_ = map.Derived<DistanceField>("signed-distance-field",
+                                             [grid] { return GridSignedDistanceField(*grid); });
+  p.field_ = p.grid_field_.get();
   p.inv_res_ = 1.0 / grid->resolution();
   p.lower_ = grid->origin();
   p.upper_ = grid->origin() + Point2(grid->width(), grid->height()) * grid->resolution();
@@ -285,32 +296,53 @@ void ObstacleProximity::VisitGridPoint(const Point2& p, int& count, bool& outsid
 
 void ObstacleProximity::WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count,
                                           bool& outside) {
-  const Point2 d = b - a;
-  const int steps = std::max(1, static_cast<int>(std::ceil(d.norm() * 4.0 * inv_res_)));
-  for (int s = 1; s <= steps; ++s) {
-    VisitGridPoint(a + d * (static_cast<double>(s) / steps), count, outside);
+  // The cells (a, b] passes through, in order: a 4-connected traversal from a's cell to b's.
+  // The next step crosses the nearer of the next x and y cell borders; comparing the fractions
+  // of the segment to them, each scaled by |dx| |dy|, needs no division.
+  const double gx0 = (a.x() - lower_.x()) * inv_res_, gy0 = (a.y() - lower_.y()) * inv_res_;
+  const double gx1 = (b.x() - lower_.x()) * inv_res_, gy1 = (b.y() - lower_.y()) * inv_res_;
+  int cx = FloorToInt(gx0), cy = FloorToInt(gy0);
+  const int ex = FloorToInt(gx1), ey = FloorToInt(gy1);
+  int steps_x = std::abs(ex - cx), steps_y = std::abs(ey - cy);
+  const int sx = ex > cx ? 1 : -1, sy = ey > cy ? 1 : -1;
+  const double adx = std::abs(gx1 - gx0), ady = std::abs(gy1 - gy0);
+  double next_x = (sx > 0 ? cx + 1 - gx0 : gx0 - cx) * ady;
+  double next_y = (sy > 0 ? cy + 1 - gy0 : gy0 - cy) * adx;
+  const int w = grid_->width(), h = grid_->height();
+  while (steps_x + steps_y > 0) {
+    if (steps_y == 0 || (steps_x > 0 && next_x < next_y)) {
+      cx += sx;
+      next_x += ady;
+      --steps_x;
+    } else {
+      cy += sy;
+      next_y += adx;
+      --steps_y;
+    }
+    if (static_cast<unsigned>(cx) >= static_cast<unsigned>(w) ||
+        static_cast<unsigned>(cy) >= static_cast<unsigned>(h)) {
+      outside = true;
+    } else {
+      CountObstacle(label_[static_cast<size_t>(cy) * w + cx], count);
+    }
   }
 }
 
 int ObstacleProximity::CountViolationsScreened(const double* xs, const double* ys,
-                                               const double* segment_length, int n) {
+                                               const double* segment_length, const int32_t* cell,
+                                               const float* value, int n) {
   if (n <= 0) return 0;
   NextStamp();
   int count = 0;
+  const double h = field_->cell_size();
+  // Float rounding of the field's values: under a thousandth of a cell on fields of up to
+  // 2^13 cells a side.
+  const double rounding = 1e-3 * h;
   if (world_ != nullptr) {
-    const DistanceField& field = world_->distance_field();
     // A segment is skipped when the field proves both ends farther than threshold + half its
     // length from every obstacle: each of its points is within half its length of an end.
-    const double margin = threshold_ + DistanceField::kCellSlack * field.cell_size() +
-                          1e-9 * field.cell_size() * field.width();
-    const double inv = field.inverse_cell_size();
-    const Point2 origin = field.origin();
-    auto clear = [&](int i) {
-      const int cx = FloorToInt((xs[i] - origin.x()) * inv);
-      const int cy = FloorToInt((ys[i] - origin.y()) * inv);
-      if (cx < 0 || cy < 0 || cx >= field.width() || cy >= field.height()) return -1.0;
-      return field.CellValue(cx, cy) - margin;
-    };
+    const double margin = threshold_ + DistanceField::kCellSlack * h + rounding;
+    auto clear = [&](int i) { return cell[i] < 0 ? -1.0 : value[i] - margin; };
     bool outside = false;
     for (int i = 0; i < n; ++i) {
       outside = outside || xs[i] < lower_.x() || ys[i] < lower_.y() || xs[i] > upper_.x() ||
@@ -332,33 +364,25 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
     }
     return count;
   }
-  // Grid: every point of the walk along a segment lies within half the segment of one end, its
-  // cell's centre within that plus a cell diagonal of the end's cell centre. The segment is not
-  // walked when the grid's distance field (exact between centres; only cells closer than the
-  // threshold carry labels) proves both ends clear, nor when both ends lie in one label's
-  // region farther than half the segment from any other region (region_reach): the walk would
-  // meet only that label, inside the grid, so it adds nothing once the label is counted, and
-  // counts it when an end's cell carries it (every vertex's cell is visited by some walk).
-  const double margin = threshold_ + grid_->resolution() * (std::sqrt(2.0) + 1e-9);
-  const int w = grid_->width(), h = grid_->height();
+  // Grid: every cell a segment passes through holds a point within half the segment of one
+  // end, so its centre lies within that plus a cell diagonal of the end's cell centre. The
+  // segment is not walked when the grid's distance at both ends' cells (the field's value plus
+  // half a cell; only cells closer than the threshold carry labels) proves them clear, nor
+  // when both ends lie in one label's region farther than half the segment from any other
+  // region (region_reach): the walk would meet only that label, inside the grid, so it adds
+  // nothing once the label is counted, and counts it when an end's cell carries it (every
+  // vertex's cell is visited by some walk).
+  const double margin = threshold_ + h * (std::sqrt(2.0) - 0.5) + rounding;
   const int32_t* region = labels_->region.data();
   const float* reach = labels_->region_reach.data();
-  auto cell_of = [&](int i) -> int64_t {
-    const int cx = FloorToInt((xs[i] - lower_.x()) * inv_res_);
-    const int cy = FloorToInt((ys[i] - lower_.y()) * inv_res_);
-    if (cx < 0 || cy < 0 || cx >= w || cy >= h) return -1;
-    return static_cast<int64_t>(cy) * w + cx;
-  };
   bool outside = false;
   VisitGridPoint(Point2(xs[0], ys[0]), count, outside);
-  int64_t cell_a = cell_of(0);
   for (int i = 0; i + 1 < n; ++i) {
-    const int64_t cell_b = cell_of(i + 1);
+    const int32_t cell_a = cell[i], cell_b = cell[i + 1];
     const double half = 0.5 * segment_length[i];
     if (cell_a < 0 || cell_b < 0) {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
-    } else if (grid_->distance_field()[cell_a] - margin > half &&
-               grid_->distance_field()[cell_b] - margin > half) {
+    } else if (value[i] - margin > half && value[i + 1] - margin > half) {
       // far from every labelled cell
     } else if (region[cell_a] == region[cell_b] && reach[cell_a] > half && reach[cell_b] > half) {
       const int32_t label = region[cell_a];
@@ -372,7 +396,6 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
     } else {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
     }
-    cell_a = cell_b;
   }
   return count + (outside ? 1 : 0);
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "core/map/distance_field.h"
 #include "core/map/map.h"
 
 namespace swarmplan {
@@ -14,8 +15,8 @@ namespace swarmplan {
 // are exact segment distances. On an OccupancyGrid an obstacle is a connected component
 // (8-connected) of blocked cells; every cell closer than the threshold to a blocked cell (by the
 // grid's distance field) carries the label of the component reached first by a breadth-first
-// sweep from all blocked cells, computed once per map and threshold; segments are walked at a
-// quarter cell.
+// sweep from all blocked cells, computed once per map and threshold; a segment counts the labels
+// of the cells it passes through (a 4-connected traversal of the grid).
 // Leaving the map counts as one more obstacle. Built once per search; CountViolations reuses
 // its buffers (no allocation). On a ShapeWorld a bucket grid over the bounds, built here, lists
 // per bucket the obstacles whose box grown by the threshold overlaps it, so each segment is
@@ -27,12 +28,32 @@ class ObstacleProximity {
 
   int CountViolations(const Path& path);
   // The same count for the path of n points (xs[i], ys[i]), with segment_length[i] the length
-  // of segment i (n - 1 values), screened by the map's distance field: a segment whose two
-  // ends the field (one read each) proves farther from every obstacle than the threshold plus
-  // half its length is not tested; the others are tested exactly as CountViolations does, so
-  // the count is the same (up to rounding at the threshold and the map's edge).
+  // of segment i (n - 1 values), screened by field(): cell[i] is point i's cell in it
+  // (FieldCell; -1 outside it) and value[i] the field's value there. A segment whose two ends
+  // the field proves farther from every obstacle than the threshold plus half its length is not
+  // tested; the others are tested exactly as CountViolations does, so the count is the same (up
+  // to rounding at the threshold and the map's edge).
   int CountViolationsScreened(const double* xs, const double* ys, const double* segment_length,
-                              int n);
+                              const int32_t* cell, const float* value, int n);
+
+  // The map's signed distance field: the ShapeWorld's own, or for a grid one built from its
+  // blocked cells, cell for cell (kept in the map's derived cache).
+  const DistanceField& field() const { return *field_; }
+  // The index of the cell of field() holding (x, y), or -1 outside the field.
+  int32_t FieldCell(double x, double y) const {
+    const int cx = FloorToInt((x - field_->origin().x()) * field_->inverse_cell_size());
+    const int cy = FloorToInt((y - field_->origin().y()) * field_->inverse_cell_size());
+    if (static_cast<unsigned>(cx) >= static_cast<unsigned>(field_->width()) ||
+        static_cast<unsigned>(cy) >= static_cast<unsigned>(field_->height())) {
+      return -1;
+    }
+    return cy * field_->width() + cx;
+  }
+  // floor(v) as an int without a libm call (v within the int range).
+  static int FloorToInt(double v) {
+    const int i = static_cast<int>(v);
+    return v < i ? i - 1 : i;
+  }
 
   // The map's rectangle in world coordinates.
   Point2 lower() const { return lower_; }
@@ -62,7 +83,7 @@ class ObstacleProximity {
   void CountSegmentOnWorld(const Point2& a, const Point2& b, int& count);
   // The grid cell of p: its label, if not yet counted, or outside.
   void VisitGridPoint(const Point2& p, int& count, bool& outside);
-  // The quarter-cell walk along (a, b].
+  // The cells (a, b] passes through, after a's own cell.
   void WalkSegmentOnGrid(const Point2& a, const Point2& b, int& count, bool& outside);
   // Counts obstacle (or component) k unless it is -1 or already counted in this call.
   void CountObstacle(int32_t k, int& count) {
@@ -90,6 +111,9 @@ class ObstacleProximity {
   double bucket_inv_size_ = 1.0;
   int buckets_x_ = 0, buckets_y_ = 0;
   std::vector<int32_t> bucket_start_, bucket_items_;
+  // The screen's field; a grid's is shared through the map's derived cache.
+  const DistanceField* field_ = nullptr;
+  std::shared_ptr<const DistanceField> grid_field_;
   // OccupancyGrid: the rasters, and their labels.
   std::shared_ptr<const GridLabels> labels_;
   const int32_t* label_ = nullptr;

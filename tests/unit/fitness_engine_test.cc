@@ -167,19 +167,74 @@ TEST(FitnessEngineTest, MatchesTheReferenceOnSharedMaps) {
   }
 }
 
-TEST(InterpolationMatrixTest, IsCachedAndReproducesTheBuilder) {
-  auto first = CachedInterpolationMatrix(Interpolation::kSpline, 3, 100);
-  auto second = CachedInterpolationMatrix(Interpolation::kSpline, 3, 100);
+TEST(InterpolationBasisTest, IsCachedAndReproducesTheBuilder) {
+  auto first = CachedInterpolationBasis(Interpolation::kSpline, 3, 100);
+  auto second = CachedInterpolationBasis(Interpolation::kSpline, 3, 100);
   EXPECT_EQ(first.get(), second.get());
   EXPECT_EQ(first->points(), 100);
   EXPECT_EQ(first->knots(), 5);
-  // Rows sum to one (the map is affine) and the ends are the start and the goal.
-  for (int i = 0; i < first->points(); ++i) EXPECT_NEAR(first->x.row(i).sum(), 1.0, 1e-12);
-  EXPECT_EQ(first->x(0, 0), 1.0);
-  EXPECT_EQ(first->x(99, 4), 1.0);
-  const InterpolationMatrix stairs = BuildInterpolationMatrix(Interpolation::kNearest, 1, 100);
-  EXPECT_EQ(stairs.points(), 7);
-  EXPECT_NE(stairs.x, stairs.y);
+  EXPECT_EQ(InterpolationBasis(Interpolation::kNearest, 1, 100).points(), 7);
+  // Every interpolation at several waypoint counts against WaypointPathBuilder on random knots.
+  Rng rng(5);
+  for (const Interpolation interpolation : {Interpolation::kSpline, Interpolation::kLinear,
+                                            Interpolation::kPolyline, Interpolation::kNearest}) {
+    for (const int k : {1, 2, 3, 5, 8, 64}) {
+      const InterpolationBasis basis(interpolation, k, 257);
+      const Point3 start(rng.Uniform(0, 100), rng.Uniform(0, 100), 0);
+      const Point3 goal(rng.Uniform(0, 100), rng.Uniform(0, 100), 0);
+      Eigen::VectorXd x(2 * k);
+      for (int d = 0; d < 2 * k; ++d) x[d] = rng.Uniform(0, 100);
+      WaypointPathBuilder builder(start, goal, k, interpolation, 257);
+      const Path& expected = builder.Build(x);
+      std::vector<double> kx{start.x()}, ky{start.y()};
+      for (int i = 0; i < k; ++i) {
+        kx.push_back(x[i]);
+        ky.push_back(x[k + i]);
+      }
+      kx.push_back(goal.x());
+      ky.push_back(goal.y());
+      std::vector<double> px(basis.points()), py(basis.points()), moments(2 * (k + 2));
+      basis.Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
+      ASSERT_EQ(static_cast<size_t>(basis.points()), expected.size()) << "k=" << k;
+      for (size_t i = 0; i < expected.size(); ++i) {
+        ASSERT_NEAR(px[i], expected[i].x(), 1e-9) << "k=" << k << " point " << i;
+        ASSERT_NEAR(py[i], expected[i].y(), 1e-9) << "k=" << k << " point " << i;
+      }
+      // The path starts and ends exactly at the start and the goal.
+      EXPECT_EQ(px.front(), start.x());
+      EXPECT_EQ(py.back(), goal.y());
+    }
+  }
+}
+
+TEST(InterpolationBasisTest, ArcLengthParametersKeepUnevenKnotsFromOvershooting) {
+  // Knots on a straight line, crowded at one end: with the uniform parameter the spline runs
+  // back and forth along the line; with each knot's distance as its parameter it moves forward
+  // only, and still passes through every knot.
+  const std::vector<double> kx = {0, 1, 1.5, 2, 20, 40}, ky(kx.size(), 0.0);
+  const InterpolationBasis uniform(Interpolation::kSpline, 4, 400);
+  const InterpolationBasis arc(Interpolation::kSpline, kx, 400);
+  std::vector<double> px(400), py(400), moments(2 * kx.size());
+  auto backward_steps = [&](const InterpolationBasis& basis) {
+    basis.Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
+    int backward = 0;
+    for (size_t i = 1; i < px.size(); ++i) backward += px[i] < px[i - 1] - 1e-12 ? 1 : 0;
+    return backward;
+  };
+  EXPECT_GT(backward_steps(uniform), 0);
+  EXPECT_EQ(backward_steps(arc), 0);
+  EXPECT_EQ(px.front(), 0.0);
+  EXPECT_EQ(px.back(), 40.0);
+  // A curved case: every knot is on the path (the points at the knots' parameters).
+  const std::vector<double> t = {0, 2, 3, 7, 8.5, 12};
+  const std::vector<double> cx = {0, 2, 3, 5, 6, 9}, cy = {0, 1, 3, 2, 5, 4};
+  const InterpolationBasis curve(Interpolation::kSpline, t, 25);  // a point every 0.5
+  curve.Apply(cx.data(), cy.data(), px.data(), py.data(), moments.data());
+  for (size_t j = 0; j < t.size(); ++j) {
+    const int i = static_cast<int>(std::lround(t[j] / 0.5));
+    EXPECT_NEAR(px[i], cx[j], 1e-9) << "knot " << j;
+    EXPECT_NEAR(py[i], cy[j], 1e-9) << "knot " << j;
+  }
 }
 
 // Distance from p to the nearest obstacle of the world (0 inside).
