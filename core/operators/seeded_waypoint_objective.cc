@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "core/geometry/collision.h"
+#include "core/smoothing/bounded_curvature.h"
 
 namespace swarmplan {
 namespace {
@@ -59,6 +60,25 @@ std::vector<Station> Stations(const Path& path, int k) {
   return stations;
 }
 
+// Where the line p + t n first meets the polyline, |t| smallest within [-below, above]; none
+// when it does not meet it there.
+std::optional<double> CrossingAlong(const Point2& p, const Point2& n, double below, double above,
+                                    const Path& polyline) {
+  std::optional<double> best;
+  for (size_t i = 0; i + 1 < polyline.size(); ++i) {
+    const Point2 a = polyline[i].head<2>(), b = polyline[i + 1].head<2>();
+    const Point2 d = b - a;
+    const double denominator = n.x() * d.y() - n.y() * d.x();
+    if (std::abs(denominator) < 1e-12 * d.norm()) continue;
+    const Point2 ap = a - p;
+    const double t = (ap.x() * d.y() - ap.y() * d.x()) / denominator;
+    const double u = (ap.x() * n.y() - ap.y() * n.x()) / denominator;
+    if (u < 0.0 || u > 1.0 || t < -below || t > above) continue;
+    if (!best || std::abs(t) < std::abs(*best)) best = t;
+  }
+  return best;
+}
+
 double FieldCell(const Map& map) {
   if (const OccupancyGrid* grid = map.grid()) return grid->resolution();
   return map.world()->distance_field().cell_size();
@@ -88,9 +108,17 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*problem.map);
   const double cell = FieldCell(*problem.map);
   std::vector<std::vector<ControlPoint>> corridors;
+  // Per seed, the spline's parameter at each knot, from the arc length between its stations.
+  std::vector<std::vector<double>> parameters;
   for (const SeedPath& seed : seeds) {
     const std::vector<Station> stations = Stations(seed.path, k);
     std::vector<ControlPoint> points;
+    // The spline's parameter is centripetal: each step the square root of the arc length
+    // between the stations (at least a millionth of a cell's).
+    auto centripetal_step = [least = 1e-6 * cell](double arc) {
+      return std::sqrt(std::max(arc, least));
+    };
+    std::vector<double> t = {0.0};
     for (size_t i = 0; i < stations.size(); ++i) {
       const double before = stations[i].s - (i > 0 ? stations[i - 1].s : 0.0);
       const double after =
@@ -104,32 +132,47 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
       c.tangent = Point2(normal.y(), -normal.x());
       c.along = 0.5 * std::min(before, after);
       points.push_back(c);
+      t.push_back(t.back() + centripetal_step(stations[i].s - (i > 0 ? stations[i - 1].s : 0.0)));
     }
+    t.push_back(t.back() + centripetal_step(seed.length - stations.back().s));
     corridors.push_back(std::move(points));
+    parameters.push_back(std::move(t));
   }
 
-  // Points enough to read the field every half cell along a path half again the longest seed.
-  const int wanted = static_cast<int>(
-      std::min<double>(kMaxPoints, std::ceil(1.5 * longest / (kPointSpacingCells * cell))));
   options.waypoints = k;
-  options.samples = std::max(options.samples, wanted);
   if (options.interpolation == Interpolation::kLinear)
     options.interpolation = Interpolation::kPolyline;
-  absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, options);
-  if (!engine.ok()) return engine.status();
+  // Per seed an engine whose spline follows the seed's arc length, with points enough to read
+  // the field every half cell along a path half again as long as the seed.
+  std::vector<FitnessEngine> engines;
+  std::vector<WaypointFitnessOptions> seed_options;
+  for (size_t j = 0; j < seeds.size(); ++j) {
+    WaypointFitnessOptions o = options;
+    const int wanted = static_cast<int>(std::min<double>(
+        kMaxPoints, std::ceil(1.5 * seeds[j].length / (kPointSpacingCells * cell))));
+    o.samples = std::max(options.samples, wanted);
+    o.knot_parameters = parameters[j];
+    absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, o);
+    if (!engine.ok()) return engine.status();
+    engines.push_back(*std::move(engine));
+    seed_options.push_back(std::move(o));
+  }
 
   std::unique_ptr<SeededWaypointObjective> objective(
-      new SeededWaypointObjective(k, std::move(corridors), *std::move(engine)));
+      new SeededWaypointObjective(k, std::move(corridors), std::move(engines)));
   objective->away_ = std::max(cell, options.fleet ? options.fleet->preferred_clearance : 0.0);
+  if (options.fleet && options.fleet->turning_radius > 0) {
+    objective->FitSmoothedSeeds(seeds, options.fleet->turning_radius, problem.clearance, *checker);
+  }
 
   // The best seed by the same fitness, read as the polyline it is.
-  WaypointFitnessOptions polyline = options;
-  polyline.interpolation = Interpolation::kPolyline;
-  absl::StatusOr<FitnessEngine> polyline_engine = FitnessEngine::Create(problem, polyline);
-  if (!polyline_engine.ok()) return polyline_engine.status();
   const std::vector<Eigen::VectorXd> guesses = objective->InitialGuesses();
   Eigen::VectorXd waypoints(2 * k);
   for (size_t j = 0; j < seeds.size(); ++j) {
+    WaypointFitnessOptions polyline = seed_options[j];
+    polyline.interpolation = Interpolation::kPolyline;
+    absl::StatusOr<FitnessEngine> polyline_engine = FitnessEngine::Create(problem, polyline);
+    if (!polyline_engine.ok()) return polyline_engine.status();
     objective->Waypoints(guesses[j].data(), waypoints.data());
     const Evaluation e = polyline_engine->Evaluate(waypoints);
     objective->seed_paths_.push_back(KnownPath{seeds[j].path, e.fitness});
@@ -142,8 +185,8 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
 
 SeededWaypointObjective::SeededWaypointObjective(int k,
                                                  std::vector<std::vector<ControlPoint>> corridors,
-                                                 FitnessEngine engine)
-    : k_(k), corridors_(std::move(corridors)), engine_(std::move(engine)) {
+                                                 std::vector<FitnessEngine> engines)
+    : k_(k), corridors_(std::move(corridors)), engines_(std::move(engines)) {
   lower_ = Eigen::VectorXd::Constant(1 + 2 * k_, -1.0);
   upper_ = Eigen::VectorXd::Constant(1 + 2 * k_, 1.0);
   single_.resize(2 * k_);
@@ -172,21 +215,51 @@ void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) cons
 
 Evaluation SeededWaypointObjective::Evaluate(const Eigen::VectorXd& x) {
   Waypoints(x.data(), single_.data());
-  return engine_.Evaluate(single_);
+  return engines_[SeedIndex(x[0])].Evaluate(single_);
 }
 
 void SeededWaypointObjective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
-  waypoints_.resize(2 * k_, xs.cols());
-  for (int j = 0; j < xs.cols(); ++j) Waypoints(xs.col(j).data(), waypoints_.col(j).data());
-  engine_.Evaluate(waypoints_, out);
+  for (int j = 0; j < xs.cols(); ++j) {
+    Waypoints(xs.col(j).data(), single_.data());
+    out[j] = engines_[SeedIndex(xs(0, j))].Evaluate(single_.data());
+  }
 }
 
 Path SeededWaypointObjective::Decode(const Eigen::VectorXd& x) {
   Eigen::VectorXd waypoints(2 * k_);
   Waypoints(x.data(), waypoints.data());
   Path path;
-  engine_.Decode(waypoints, path);
+  engines_[SeedIndex(x[0])].Decode(waypoints, path);
   return path;
+}
+
+void SeededWaypointObjective::FitSmoothedSeeds(const std::vector<SeedPath>& seeds,
+                                               double turning_radius, double clearance,
+                                               const CollisionChecker& checker) {
+  BoundedCurvatureOptions smoothing;
+  smoothing.turning_radius = turning_radius;
+  smoothing.clearance = clearance;
+  for (size_t j = 0; j < seeds.size(); ++j) {
+    const BoundedCurvatureResult smoothed =
+        SmoothToTurningRadius(seeds[j].path, smoothing, checker);
+    if (!smoothed.collision_free) continue;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
+    x[0] = static_cast<double>(j) + 0.5;
+    bool fitted = true;
+    for (int i = 0; i < k_ && fitted; ++i) {
+      const CorridorSection& s = corridors_[j][i].section;
+      const std::optional<double> t =
+          CrossingAlong(s.point, s.normal, s.right, s.left, smoothed.path);
+      if (!t) {
+        fitted = false;
+      } else if (*t > 0) {
+        x[1 + k_ + i] = *t / s.left;
+      } else if (*t < 0) {
+        x[1 + k_ + i] = *t / s.right;
+      }
+    }
+    if (fitted) smoothed_guesses_.push_back(std::move(x));
+  }
 }
 
 std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
@@ -209,6 +282,7 @@ std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
     }
     guesses.push_back(std::move(x));
   }
+  guesses.insert(guesses.end(), smoothed_guesses_.begin(), smoothed_guesses_.end());
   return guesses;
 }
 

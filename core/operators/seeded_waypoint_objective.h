@@ -7,6 +7,7 @@
 
 #include "absl/status/statusor.h"
 #include "core/fitness/fitness_engine.h"
+#include "core/geometry/collision.h"
 #include "core/operators/objective.h"
 #include "core/problem.h"
 #include "core/seeds/corridor.h"
@@ -21,9 +22,12 @@ namespace swarmplan {
 // CorridorSection). The control points of a seed are its interior vertices and the midpoints of
 // its segments, in order (more midpoints on the longest gaps when another seed has more, evenly
 // thinned beyond `max_control_points`), so with every offset 0 the path is the seed itself
-// under linear interpolation. The moved points are the waypoints [x1..xk, y1..yk] of a
-// FitnessEngine, which interpolates and evaluates them as for every waypoint planner. The
-// search space grows with the seeds' turns, not with the map.
+// under linear interpolation. The moved points are the waypoints [x1..xk, y1..yk] of the seed's
+// FitnessEngine, which interpolates and evaluates them as for every waypoint planner; its spline
+// has a centripetal parameter (steps the square root of the arc length between the control
+// points along the seed), so it neither overshoots between unevenly spaced control points nor
+// loops where close ones move apart. The search space grows with the seeds' turns, not with
+// the map.
 class SeededWaypointObjective final : public PathObjective {
  public:
   static absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> Create(
@@ -38,7 +42,9 @@ class SeededWaypointObjective final : public PathObjective {
   Path Decode(const Eigen::VectorXd& x) override;
   // The seeds themselves (selector at the middle of each seed's interval, every offset 0), then
   // each seed with its control points moved toward the middle of their corridor sections by at
-  // most max(preferred clearance, a field cell).
+  // most max(preferred clearance, a field cell), then, with a turning radius, each seed after
+  // the bounded-curvature smoothing (its control points moved across to where the smoothed
+  // path crosses their sections).
   std::vector<Eigen::VectorXd> InitialGuesses() const override;
   std::optional<KnownPath> BestKnownPath() override { return seed_paths_[best_seed_]; }
   int Corridors() const override { return static_cast<int>(corridors_.size()); }
@@ -48,7 +54,8 @@ class SeededWaypointObjective final : public PathObjective {
 
   int control_points() const { return k_; }
   int seeds() const { return static_cast<int>(corridors_.size()); }
-  FitnessEngine& engine() { return engine_; }
+  // The engine that evaluates the paths of seed j's corridor.
+  FitnessEngine& engine(int j) { return engines_[j]; }
   // The engine's waypoint vector [x1..xk, y1..yk] for a decision vector.
   void Waypoints(const double* x, double* waypoints) const;
 
@@ -59,19 +66,22 @@ class SeededWaypointObjective final : public PathObjective {
     double along = 0.0;  // the largest move along the seed
   };
   SeededWaypointObjective(int k, std::vector<std::vector<ControlPoint>> corridors,
-                          FitnessEngine engine);
+                          std::vector<FitnessEngine> engines);
+  // Fills smoothed_guesses_: each seed smoothed to the turning radius, read at the sections.
+  void FitSmoothedSeeds(const std::vector<SeedPath>& seeds, double turning_radius, double clearance,
+                        const CollisionChecker& checker);
   // The seed a selector s picks: floor(s), clamped to the seeds.
   int SeedIndex(double selector) const;
 
   int k_;
   std::vector<std::vector<ControlPoint>> corridors_;  // per seed, k control points
-  FitnessEngine engine_;
+  std::vector<FitnessEngine> engines_;                // per seed
   std::vector<KnownPath> seed_paths_;  // each seed as a polyline, by the same fitness
   int best_seed_ = 0;
   double away_ = 0.0;  // the largest move of the second guess of each seed
+  std::vector<Eigen::VectorXd> smoothed_guesses_;
   Eigen::VectorXd lower_, upper_;
-  Eigen::VectorXd single_;     // engine input of Evaluate, 2k
-  Eigen::MatrixXd waypoints_;  // engine input of EvaluateColumns, 2k x batch
+  Eigen::VectorXd single_;  // engine input, 2k
 };
 
 }  // namespace swarmplan
