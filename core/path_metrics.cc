@@ -34,16 +34,8 @@ double PathLength(const Path& path) {
 // Curvature at an interior vertex b between a and c is that of the circle through a, b and
 // c: 4 * area / (|ab| |bc| |ca|) = 2 sin(turn) / |ca|. A reversal (turn of pi) has infinite
 // curvature.
-PathMetrics EvaluatePath(const Map& map, const Path& path, double clearance) {
-  PathMetrics m;
-  m.length = PathLength(path);
-  if (path.empty()) {
-    m.min_clearance = -std::numeric_limits<double>::infinity();
-    return m;
-  }
-  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(map);
-  m.min_clearance = checker->PathClearance(path);
-  m.collision_free = checker->PathFree(path, clearance);
+PathTurns MeasureTurns(const Path& path) {
+  PathTurns turns;
   const Path v = WithoutRepeats(path);
   for (size_t i = 1; i + 1 < v.size(); ++i) {
     const Point3 u = v[i] - v[i - 1];
@@ -54,13 +46,30 @@ PathMetrics EvaluatePath(const Map& map, const Path& path, double clearance) {
             .norm();
     const double turn = std::atan2(sine, u.dot(w));
     if (turn <= kTurnThreshold) continue;
-    ++m.turning_points;
+    ++turns.turning_points;
+    turns.longest_turning_segment = std::max({turns.longest_turning_segment, u.norm(), w.norm()});
     const double chord = (v[i + 1] - v[i - 1]).norm();
     const double curvature = (turn >= std::numbers::pi || chord == 0.0)
                                  ? std::numeric_limits<double>::infinity()
                                  : 2.0 * sine / (u.norm() * w.norm()) / chord;
-    m.max_curvature = std::max(m.max_curvature, curvature);
+    turns.max_curvature = std::max(turns.max_curvature, curvature);
   }
+  return turns;
+}
+
+PathMetrics EvaluatePath(const Map& map, const Path& path, double clearance) {
+  PathMetrics m;
+  m.length = PathLength(path);
+  if (path.empty()) {
+    m.min_clearance = -std::numeric_limits<double>::infinity();
+    return m;
+  }
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(map);
+  m.min_clearance = checker->PathClearance(path);
+  m.collision_free = checker->PathFree(path, clearance);
+  const PathTurns turns = MeasureTurns(path);
+  m.max_curvature = turns.max_curvature;
+  m.turning_points = turns.turning_points;
   return m;
 }
 

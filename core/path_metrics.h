@@ -21,4 +21,14 @@ PathMetrics EvaluatePath(const Map& map, const Path& path, double clearance);
 // Polyline length.
 double PathLength(const Path& path);
 
+// The turns of a polyline: interior vertices where the heading changes, the largest discrete
+// curvature among them (PathMetrics's), and the longest segment beside one of them (a polyline
+// samples a curve of that curvature only where this is short against the curve's radius).
+struct PathTurns {
+  double max_curvature = 0.0;
+  int turning_points = 0;
+  double longest_turning_segment = 0.0;
+};
+PathTurns MeasureTurns(const Path& path);
+
 }  // namespace swarmplan

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/path_metrics.h"
 #include "core/smoothing/bezier.h"
 #include "core/smoothing/simplify.h"
 
@@ -12,6 +13,9 @@ namespace swarmplan {
 namespace {
 
 constexpr double kRadiusMargin = 1.01;
+// A polyline whose segments beside every turn are at most this many radii long samples a curve;
+// longer ones meet at corners, however small their discrete curvature.
+constexpr double kSampledCurveSegmentInRadii = 0.25;
 constexpr double kTolerancesInRadii[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.6};
 // Merges and outward moves per tolerance at most.
 constexpr int kRepairRounds = 32;
@@ -162,6 +166,18 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
   Path flat;
   flat.reserve(raw.size());
   for (const Point3& p : raw) flat.emplace_back(p.x(), p.y(), 0.0);
+  // A path that already samples a curve turning no tighter than the radius (short segments at
+  // every turn) and keeps the clearance stays as it is.
+  const PathTurns turns = MeasureTurns(flat);
+  if (turns.max_curvature <= 1.0 / options.turning_radius &&
+      turns.longest_turning_segment <= kSampledCurveSegmentInRadii * options.turning_radius &&
+      checker.PathFree(flat, options.clearance)) {
+    BoundedCurvatureResult kept;
+    kept.path = std::move(flat);
+    kept.max_curvature = turns.max_curvature;
+    kept.collision_free = true;
+    return kept;
+  }
   std::optional<BoundedCurvatureResult> best;
   for (const double tolerance : kTolerancesInRadii) {
     const Path simplified =

@@ -13,14 +13,18 @@ struct BoundedCurvatureOptions {
 
 struct BoundedCurvatureResult {
   Path path;                   // the smoothed polyline (z = 0)
-  double max_curvature = 0.0;  // the largest analytic curvature of the corners' curves
+  double max_curvature = 0.0;  // the largest analytic curvature of the corners' curves (of a
+                               // path kept as it is, its discrete curvature)
   int corners = 0;             // corners of the simplified path that got a curve
   int corners_over = 0;        // corners that had no room or clearance for 1 / radius
   bool collision_free = false;
 };
 
 // Smooths a 2D path into straight lines joined by continuous-curvature Bezier corners (bezier.h)
-// whose curvature peaks at 1 / turning radius, keeping the clearance:
+// whose curvature peaks at 1 / turning radius, keeping the clearance. A path that keeps the
+// clearance, samples a curve (no segment beside a turn longer than a quarter radius) and whose
+// discrete curvature (MeasureTurns) is already within 1 / radius is returned as it is
+// (flattened to z = 0). Otherwise:
 // 1. SimplifyWithin the path at a tolerance of 0.05 turning radii (then 0.1, 0.2, ... 1.6 when
 //    the corners do not fit), so a densely sampled path becomes its few real corners;
 // 2. neighbouring corners that turn the same way and need more room than the segment between

@@ -90,6 +90,29 @@ TEST(BoundedCurvatureTest, ReducesADenselySampledCurveToItsFewCorners) {
   EXPECT_LT(r.corners, 40);
 }
 
+TEST(BoundedCurvatureTest, KeepsAPathThatAlreadyTurnsWideEnough) {
+  const MapPtr map = EmptyWorld();
+  const auto checker = MakeCollisionChecker(*map);
+  // An arc of radius 5 sampled every few degrees: within 1 / 2 everywhere, so it stays as it is.
+  Path raw;
+  for (int i = 0; i <= 40; ++i) {
+    const double a = 0.05 * i;
+    raw.emplace_back(20 + 5 * std::cos(a), 10 + 5 * std::sin(a), 0);
+  }
+  ASSERT_LT(LargestMengerCurvature(raw), 0.5);
+  BoundedCurvatureOptions options;
+  options.turning_radius = 2.0;
+  const BoundedCurvatureResult kept = SmoothToTurningRadius(raw, options, *checker);
+  EXPECT_EQ(kept.path, raw);
+  EXPECT_TRUE(kept.collision_free);
+  EXPECT_EQ(kept.corners_over, 0);
+  // The same arc at radius 1 turns too tightly for 2: it is smoothed.
+  Path tight;
+  for (const Point3& p : raw) tight.emplace_back(20 + (p.x() - 20) / 5, 10 + (p.y() - 10) / 5, 0);
+  const BoundedCurvatureResult smoothed = SmoothToTurningRadius(tight, options, *checker);
+  EXPECT_NE(smoothed.path, tight);
+}
+
 TEST(BoundedCurvatureTest, ReportsCornersWithoutRoomInsteadOfHidingThem) {
   const MapPtr map = EmptyWorld();
   const auto checker = MakeCollisionChecker(*map);
