@@ -257,7 +257,10 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
     record.initial_fitness = result->convergence.front().best_fitness;
   record.best_iteration = result->best_iteration;
   if (result->objective) record.objective = result->objective->Total();
-  if (result->seed_objective) record.seed_objective = result->seed_objective->Total();
+  if (result->seed_objective) {
+    record.seed_objective = result->seed_objective->Total();
+    record.seed_penalty = result->seed_objective->Total() - result->seed_objective->length;
+  }
   record.seconds_to_1_05 = observer.to_1_05;
   record.seconds_to_1_02 = observer.to_1_02;
   record.convergence = std::move(observer.progress);

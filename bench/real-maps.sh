@@ -110,12 +110,19 @@ for m in maps:
         print(f"| {m} | {p} | " + " | ".join(cells) + " |")
 
 print("\n## Fleet: clearance 0.5, preferred clearance 1.5, turning radius 2, bounded-curvature smoothing (init=seeded)\n")
-print("Success; median and worst length / exact optimum (with the clearance); runs whose final")
-print("objective (after the smoothing) is below the best seed's after the same smoothing, and the")
-print("median improvement; successful runs whose largest discrete curvature is at most 1 / R;")
-print("median seconds per plan.\n")
-print("| map | planner | success | median ratio | worst ratio | below the seed | median improvement | curvature <= 1/R | s |")
-print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+print("Success; median and worst length / exact optimum (with the clearance); runs whose best")
+print("seed leaves something to gain (`seed_penalty` > 0: its smoothed objective is more than its")
+print("length), and among them the runs whose final objective (after the smoothing) is below the")
+print("best seed's after the same smoothing, with the median improvement; successful runs whose")
+print("largest discrete curvature is at most 1 / R; median seconds per plan.\n")
+print("| map | planner | success | median ratio | worst ratio | improvable | below the seed | median improvement | curvature <= 1/R | s |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+totals = dict(runs=0, ok=0, improvable=0, better=0, bounded=0, within=0, gains=[], ratios=[])
+
+def improvable(r):
+    f0, pen = num(r, "seed_objective"), num(r, "seed_penalty")
+    return f0 is not None and pen is not None and pen > 1e-6 * f0
+
 for m in maps:
     F = rows("fleet", m)
     for p in planners:
@@ -124,17 +131,33 @@ for m in maps:
             continue
         succ, med, worst, sec = cell(rs)
         ok = [r for r in rs if r["success"] == "true"]
-        gains = []
-        better = 0
-        for r in ok:
-            f, f0 = num(r, "objective"), num(r, "seed_objective")
-            if f is None or f0 is None or f0 <= 0:
-                continue
-            gains.append(1 - f / f0)
-            better += f < f0 * (1 - 1e-9)
+        room = [r for r in ok if improvable(r)]
+        gains = [1 - num(r, "objective") / num(r, "seed_objective") for r in room]
+        better = sum(1 for r in room if num(r, "objective") < num(r, "seed_objective") * (1 - 1e-9))
         gain = f"{100 * statistics.median(gains):.1f} %" if gains else "–"
         bounded = sum(1 for r in ok if num(r, "max_curvature") is not None
                       and num(r, "max_curvature") <= 0.5 * (1 + 1e-6))
-        print(f"| {m} | {p} | {succ} | {med} | {worst} | {better}/{len(ok)} | {gain} | "
-              f"{bounded}/{len(ok)} | {sec} |")
+        totals["runs"] += len(rs)
+        totals["ok"] += len(ok)
+        totals["improvable"] += len(room)
+        totals["better"] += better
+        totals["bounded"] += bounded
+        totals["gains"] += gains
+        ratios = [num(r, "ratio") for r in ok if num(r, "ratio") is not None]
+        totals["ratios"] += ratios
+        totals["within"] += sum(1 for x in ratios if x <= 1.10)
+        print(f"| {m} | {p} | {succ} | {med} | {worst} | {len(room)}/{len(ok)} | {better}/{len(room)} | "
+              f"{gain} | {bounded}/{len(ok)} | {sec} |")
+
+t = totals
+if t["runs"]:
+    pct = lambda a, b: f"{100 * a / b:.1f} %" if b else "–"
+    print(f"\nFleet totals: {t['ok']} of {t['runs']} runs found a path (the others have no path that keeps")
+    print(f"the clearance); {t['improvable']} of those {t['ok']} have a best seed with something to gain;")
+    print(f"the final objective is below the smoothed seed's in {t['better']} of them ({pct(t['better'], t['improvable'])}),")
+    if t["gains"]:
+        print(f"by a median {100 * statistics.median(t['gains']):.2f} %; ", end="")
+    print(f"curvature within 1 / R in {t['bounded']} of {t['ok']} ({pct(t['bounded'], t['ok'])}); length within")
+    worst = f"{max(t['ratios']):.3f}" if t["ratios"] else "–"
+    print(f"1.10 of the optimum in {t['within']} of {len(t['ratios'])}, the worst {worst}.")
 PY

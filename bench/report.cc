@@ -50,7 +50,7 @@ std::string CsvField(const std::string& text) {
 std::string CsvHeader() {
   return "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
          "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,best_"
-         "iteration,objective,seed_objective,seconds_to_1.05,seconds_to_1.02\n";
+         "iteration,objective,seed_objective,seed_penalty,seconds_to_1.05,seconds_to_1.02\n";
 }
 
 std::string CsvRow(const RunRecord& r) {
@@ -74,6 +74,7 @@ std::string CsvRow(const RunRecord& r) {
       absl::StrCat(r.best_iteration),
       FormatOptional(r.objective),
       FormatOptional(r.seed_objective),
+      FormatOptional(r.seed_penalty),
       FormatOptional(r.seconds_to_1_05),
       FormatOptional(r.seconds_to_1_02),
   };
