@@ -107,6 +107,8 @@ InterpolationBasis::InterpolationBasis(Interpolation interpolation,
 void InterpolationBasis::FactorMomentSystem(const std::vector<double>& h) {
   const int n = knots_;
   h_ = h;
+  inverse_h_.resize(h.size());
+  for (size_t i = 0; i < h.size(); ++i) inverse_h_[i] = 1.0 / h[i];
   if (n < 4) return;
   // Unknowns M_1..M_n-2. Interior row i:
   //   h_i-1 M_i-1 + 2 (h_i-1 + h_i) M_i + h_i M_i+1 = 6 ((y_i+1 - y_i) / h_i - (y_i - y_i-1) /
@@ -134,12 +136,13 @@ void InterpolationBasis::FactorMomentSystem(const std::vector<double>& h) {
   for (int k = 0; k < m; ++k) {
     pivot_[k] = main[k] - (k > 0 ? sub_[k] * super_[k - 1] : 0.0);
     super_[k] = upper[k] / pivot_[k];
+    pivot_[k] = 1.0 / pivot_[k];
   }
 }
 
 size_t InterpolationBasis::MemoryBytes() const {
   return sizeof(*this) + first_.size() * sizeof(int) +
-         (6 * ax_.size() + 4 * h_.size()) * sizeof(double);
+         (6 * ax_.size() + 5 * h_.size()) * sizeof(double);
 }
 
 void InterpolationBasis::Moments(const double* v, double* out) const {
@@ -153,10 +156,11 @@ void InterpolationBasis::Moments(const double* v, double* out) const {
   }
   const int m = n - 2;
   double* r = out + 1;
+  const double* inv = inverse_h_.data();
   for (int k = 0; k < m; ++k) {
-    r[k] = 6.0 * ((v[k + 2] - v[k + 1]) / h[k + 1] - (v[k + 1] - v[k]) / h[k]);
+    r[k] = 6.0 * ((v[k + 2] - v[k + 1]) * inv[k + 1] - (v[k + 1] - v[k]) * inv[k]);
     if (k > 0) r[k] -= sub_[k] * r[k - 1];
-    r[k] /= pivot_[k];
+    r[k] *= pivot_[k];
   }
   for (int k = m - 2; k >= 0; --k) r[k] -= super_[k] * r[k + 1];
   out[0] = ((h[0] + h[1]) * out[1] - h[0] * out[2]) / h[1];

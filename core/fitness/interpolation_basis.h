@@ -52,10 +52,10 @@ class InterpolationBasis {
   // Points [first_[j], first_[j + 1]) lie on piece j.
   std::vector<int> first_;
   std::vector<double> ax_, bx_, ay_, by_, c_, d_;
-  // The Thomas sweep of the moment system, per unknown: the factor of the previous row and the
-  // pivot, and the modified super-diagonal.
+  // The Thomas sweep of the moment system, per unknown: the factor of the previous row, the
+  // pivot's inverse, and the modified super-diagonal.
   std::vector<double> sub_, pivot_, super_;
-  std::vector<double> h_;  // the parameter steps between the knots
+  std::vector<double> h_, inverse_h_;  // the parameter steps between the knots
 };
 
 // The basis for (interpolation, waypoints, samples), built once per process and shared

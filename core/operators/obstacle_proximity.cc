@@ -375,6 +375,8 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
   const double margin = threshold_ + h * (std::sqrt(2.0) - 0.5) + rounding;
   const int32_t* region = labels_->region.data();
   const float* reach = labels_->region_reach.data();
+  const int32_t w = grid_->width();
+  const double side_step_limit = (w - 2) * grid_->resolution();
   bool outside = false;
   VisitGridPoint(Point2(xs[0], ys[0]), count, outside);
   for (int i = 0; i + 1 < n; ++i) {
@@ -382,6 +384,14 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
     const double half = 0.5 * segment_length[i];
     if (cell_a < 0 || cell_b < 0) {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
+    } else if (cell_a == cell_b) {
+      // the walk visits no cell
+    } else if (cell_b == cell_a + w || cell_b == cell_a - w ||
+               ((cell_b == cell_a + 1 || cell_b == cell_a - 1) &&
+                segment_length[i] < side_step_limit)) {
+      // A side neighbour: the walk visits that cell alone. (Indices one apart are neighbours
+      // in a row when the segment is too short to wrap to the next row: under w - 2 cells.)
+      CountObstacle(label_[cell_b], count);
     } else if (value[i] - margin > half && value[i + 1] - margin > half) {
       // far from every labelled cell
     } else if (region[cell_a] == region[cell_b] && reach[cell_a] > half && reach[cell_b] > half) {
