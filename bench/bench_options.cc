@@ -11,6 +11,7 @@
 #include "absl/strings/str_split.h"
 #include "absl/strings/strip.h"
 #include "core/map/io/map_io.h"
+#include "core/problem.h"
 #include "core/smoothing/smoothing.h"
 
 namespace swarmplan::bench {
@@ -134,6 +135,10 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
   app.add_option("--turning-radius", o.turning_radius,
                  "Turning radius of the fleet objective, world units (0: none)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--alternatives", o.alternatives,
+                 "Paths in other corridors each plan returns besides its own, as K - 1 of "
+                 "PlanRequest.alternatives = K (0: none)")
+      ->check(CLI::Range(0, kMaxAlternatives - 1));
   app.add_option("--optimum-budget", o.optimum_budget_seconds,
                  "Seconds per problem for its exact optimum, the `optimal` column (0: none)")
       ->check(CLI::NonNegativeNumber);

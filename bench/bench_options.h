@@ -34,6 +34,7 @@ struct BenchOptions {
   // The fleet objective's preferences of every problem (Problem::fleet).
   double preferred_clearance = 0.0;
   double turning_radius = 0.0;
+  int alternatives = 0;  // PlanRequest.alternatives: paths in other corridors asked for
   double optimum_budget_seconds = 10.0;  // per problem, for the exact optimum; 0: none
   std::string smoothing = "none";
   std::string csv_path;              // "" for stdout

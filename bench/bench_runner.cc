@@ -7,6 +7,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
+#include "core/geometry/homotopy.h"
 #include "core/optimum.h"
 #include "core/run.h"
 #include "core/stop_token.h"
@@ -210,6 +211,7 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   request.problem.clearance = options.clearance;
   request.problem.fleet.preferred_clearance = options.preferred_clearance;
   request.problem.fleet.turning_radius = options.turning_radius;
+  if (options.alternatives > 0) request.problem.alternatives = options.alternatives + 1;
   request.problem.limits.max_iterations = options.max_iterations;
   if (options.time_budget_seconds) {
     request.problem.limits.time_budget = absl::Seconds(*options.time_budget_seconds);
@@ -260,6 +262,22 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   if (result->seed_objective) {
     record.seed_objective = result->seed_objective->Total();
     record.seed_penalty = result->seed_objective->Total() - result->seed_objective->length;
+  }
+  if (options.alternatives > 0 && record.success) {
+    // Valid alternatives, and how many of the paths (the result first) lie pairwise in
+    // distinct corridors by an independent test.
+    std::vector<const Path*> distinct = {&result->smoothed_path};
+    int valid = 0;
+    for (const PlanResult::Alternative& alternative : result->alternatives) {
+      if (!alternative.metrics.collision_free) continue;
+      ++valid;
+      const bool separated = std::all_of(distinct.begin(), distinct.end(), [&](const Path* kept) {
+        return SeparatedByObstacle(*problem.map, *kept, alternative.path);
+      });
+      if (separated) distinct.push_back(&alternative.path);
+    }
+    record.alternatives = valid;
+    record.distinct_corridors = static_cast<int>(distinct.size());
   }
   record.seconds_to_1_05 = observer.to_1_05;
   record.seconds_to_1_02 = observer.to_1_02;

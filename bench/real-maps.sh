@@ -6,11 +6,14 @@
 #   length: no preferences (the fleet objective is the length; clearance 0 on grids);
 #   fleet:  clearance 0.5, preferred clearance 1.5, turning radius 2 (world units = cells on
 #           the Moving AI maps), init=seeded only, bounded-curvature smoothing; compared with
-#           the best seed after the same smoothing.
-# Writes OUT_DIR/{length,paper,fleet}-MAP.csv and OUT_DIR/summary.md (the report's tables).
+#           the best seed after the same smoothing;
+#   alternatives: the length settings with PlanRequest.alternatives = 3 (--alternatives 2):
+#           how many of the three paths lie in distinct corridors.
+# Writes OUT_DIR/{length,paper,fleet,alternatives}-MAP.csv; prints the report's tables (stdout).
 #
-# Usage: [MODES="length paper fleet"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
-# One run after another on one core, about 25 minutes (two MODES side by side: about 10).
+# Usage: [MODES="length paper fleet alternatives"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
+# One run after another on one core, about 35 minutes (two MODES side by side: about 18);
+# MODES=none prints the tables of the CSVs already in OUT_DIR.
 set -euo pipefail
 
 BUILD_DIR=${1:-build}
@@ -19,7 +22,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 SHARED=${SHARED_DIR:-$HERE/../../shared/benchmarks}
 BENCH="nice -n 10 $BUILD_DIR/bench/swarmplan-bench"
 source "$HERE/waypoint-swarm-settings.sh"
-MODES=${MODES:-length paper fleet}
+MODES=${MODES:-length paper fleet alternatives}
 mkdir -p "$OUT"
 # mode NAME: whether NAME is among the MODES to run.
 mode() { [[ " $MODES " == *" $1 "* ]]; }
@@ -36,6 +39,10 @@ run_modes() {
   if mode fleet; then
     $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" "${FLEET[@]}" --csv "$OUT/fleet-$m.csv" \
       2>>"$OUT/notes.txt"
+  fi
+  if mode alternatives; then
+    $BENCH "${PLANNERS[@]}" "${SEL[@]}" "${COMMON[@]}" --alternatives 2 \
+      --csv "$OUT/alternatives-$m.csv" 2>>"$OUT/notes.txt"
   fi
 }
 
@@ -160,4 +167,30 @@ if t["runs"]:
     print(f"curvature within 1 / R in {t['bounded']} of {t['ok']} ({pct(t['bounded'], t['ok'])}); length within")
     worst = f"{max(t['ratios']):.3f}" if t["ratios"] else "–"
     print(f"1.10 of the optimum in {t['within']} of {len(t['ratios'])}, the worst {worst}.")
+
+print("\n## Alternatives: PlanRequest.alternatives = 3, the length settings (init=seeded)\n")
+print("Successful runs; among them the runs that returned 2 collision-free alternatives, and the")
+print("runs whose 3 paths (the result and the alternatives) lie pairwise in distinct corridors by")
+print("the independent test (`distinct_corridors`), at least 2 of them; median length / exact")
+print("optimum of the result.\n")
+print("| map | planner | success | 2 alternatives | 3 corridors | >= 2 corridors | median ratio |")
+print("|---|---|---:|---:|---:|---:|---:|")
+alt = dict(ok=0, two=0, three=0, several=0)
+for m in maps:
+    A = rows("alternatives", m)
+    for p in planners:
+        rs = [r for r in A if r["planner"] == p]
+        if not rs:
+            continue
+        succ, med, _, _ = cell(rs)
+        ok = [r for r in rs if r["success"] == "true"]
+        two = sum(1 for r in ok if num(r, "alternatives") == 2)
+        three = sum(1 for r in ok if num(r, "distinct_corridors") == 3)
+        several = sum(1 for r in ok if (num(r, "distinct_corridors") or 0) >= 2)
+        for k, v in (("ok", len(ok)), ("two", two), ("three", three), ("several", several)):
+            alt[k] += v
+        print(f"| {m} | {p} | {succ} | {two}/{len(ok)} | {three}/{len(ok)} | {several}/{len(ok)} | {med} |")
+if alt["ok"]:
+    print(f"\nAlternatives totals: of {alt['ok']} successful runs, {alt['two']} returned two alternatives,")
+    print(f"{alt['three']} three paths in pairwise distinct corridors, {alt['several']} at least two.")
 PY

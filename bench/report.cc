@@ -50,7 +50,8 @@ std::string CsvField(const std::string& text) {
 std::string CsvHeader() {
   return "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
          "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,best_"
-         "iteration,objective,seed_objective,seed_penalty,seconds_to_1.05,seconds_to_1.02\n";
+         "iteration,objective,seed_objective,seed_penalty,seconds_to_1.05,seconds_to_1.02,"
+         "alternatives,distinct_corridors\n";
 }
 
 std::string CsvRow(const RunRecord& r) {
@@ -77,6 +78,8 @@ std::string CsvRow(const RunRecord& r) {
       FormatOptional(r.seed_penalty),
       FormatOptional(r.seconds_to_1_05),
       FormatOptional(r.seconds_to_1_02),
+      r.alternatives ? absl::StrCat(*r.alternatives) : "",
+      r.distinct_corridors ? absl::StrCat(*r.distinct_corridors) : "",
   };
   return absl::StrCat(absl::StrJoin(fields, ","), "\n");
 }

@@ -35,6 +35,10 @@ struct RunRecord {
   // The seed's objective beyond its length (its clearance, curvature and violation terms): what
   // a search can gain on it. 0 when the seed is already the best path by the objective.
   std::optional<double> seed_penalty;
+  // With --alternatives: the collision-free alternatives returned, and how many of the paths
+  // (the result and those) lie pairwise in distinct corridors (SeparatedByObstacle).
+  std::optional<int> alternatives;
+  std::optional<int> distinct_corridors;
   // Seconds from the start of the plan (seed paths included) to the first iteration whose best
   // is feasible and, by the planner's fitness, within 1.05 and 1.02 of the optimum (the fitness
   // is the raw path's length only for feasible paths without preference terms).

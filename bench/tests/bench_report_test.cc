@@ -76,7 +76,8 @@ TEST(BenchReportTest, CsvHeaderHasTheDocumentedColumns) {
   EXPECT_EQ(CsvHeader(),
             "map,scenario,planner,seed,success,length,optimal,ratio,scen_optimal,min_clearance,"
             "max_curvature,iterations,evaluations,wall_seconds,fitness,initial_fitness,"
-            "best_iteration,objective,seed_objective,seed_penalty,seconds_to_1.05,seconds_to_1.02\n");
+            "best_iteration,objective,seed_objective,seed_penalty,seconds_to_1.05,seconds_to_1.02,"
+            "alternatives,distinct_corridors\n");
 }
 
 TEST(BenchReportTest, CsvRowOfASuccessfulRun) {
@@ -97,12 +98,12 @@ TEST(BenchReportTest, CsvRowOfASuccessfulRun) {
   r.seconds_to_1_05 = 0.125;
   EXPECT_EQ(CsvRow(r),
             "\"my,map.map\",(1 2)->(3 4),astar,42,true,12.5,10,1.25,10.5,0.5,0,3,120,0.250000,12.5,"
-            "13,2,12.75,13.5,0.5,0.125,\n");
+            "13,2,12.75,13.5,0.5,0.125,,,\n");
 }
 
 TEST(BenchReportTest, CsvRowOfAFailedRunLeavesMeasuresEmpty) {
   const RunRecord r = Record("pso", "arena.map", false, 0.0, std::nullopt, 1.0);
-  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,,0,0,1.000000,,,0,,,,,\n");
+  EXPECT_EQ(CsvRow(r), "arena.map,0,pso,1,false,,,,,,,0,0,1.000000,,,0,,,,,,,\n");
 }
 
 TEST(BenchReportTest, SummarizeGroupsByPlannerAndMapInFirstSeenOrder) {
