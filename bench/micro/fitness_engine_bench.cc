@@ -1,5 +1,5 @@
 // The waypoint planners' fitness: the reference path (spline solve per evaluation, exact
-// obstacle count) against the FitnessEngine (cached interpolation matrix, screened count,
+// obstacle count) against the FitnessEngine (cached interpolation basis, screened count,
 // whole populations), for the papers' L (1 + M xi) and the fleet objective; the end-to-end
 // effect on aem-bso; and a streaming read for this machine's memory bandwidth.
 //
@@ -153,7 +153,7 @@ void FitnessArgs(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Fitness)->Apply(FitnessArgs);
 
 // The seeded objective of the fleet setting on Berlin_0_256's longest scenario, the decision
-// space a seeded swarm searches (3 seeds, up to 64 control points, a point every half cell):
+// space a seeded swarm searches (3 seeds, up to 1024 control points, a point every half cell):
 // vectors drawn uniformly in the box with the offsets scaled by 0.05, 0.2 and 1 in turn, like
 // a population from its start to its end. Arg: 1 = the fleet objective, 0 = the papers'
 // penalty. Items per second = evaluations per CPU second; `points` = points per path.
@@ -206,7 +206,7 @@ BENCHMARK(BM_SeededFitness)->Arg(1)->Arg(0);
 // aem-bso with its defaults on Berlin_0_256, a long scenario of the last bucket: evaluations per
 // CPU second of the whole run (search, bookkeeping, decoding and the final check). Arg: 0 =
 // the papers' initialisation with the reference objective, 1 = as registered (init=seeded: up
-// to 64 control points, a point every half cell), 2 = init=paper through the engine (3
+// to 1024 control points, a point every half cell), 2 = init=paper through the engine (3
 // waypoints, 100 samples).
 void BM_AemBsoEndToEnd(benchmark::State& state) {
   const FitnessCase& c = Case(4);

@@ -45,7 +45,7 @@ std::vector<ParamSpec> SeedingParams(const std::string& seeded_meaning,
 std::vector<ParamSpec> WaypointSeedingParams() {
   return SeedingParams(
       "the swarm moves the control points of exact seed paths (one per seed vertex and segment, "
-      "at most 64) within their corridors and minimises the fleet objective (length, preferred "
+      "at most 1024) within their corridors and minimises the fleet objective (length, preferred "
       "clearance, turning radius); it never returns a path worse than its best seed",
       "the paper's initialisation over the whole map, `waypoints` waypoints, fitness "
       "L (1 + M xi)");

@@ -31,8 +31,11 @@ std::vector<ParamSpec> WaypointSeedingParams();
 // The paper's initialisation when the planner has no `init` parameter.
 WaypointSeeding WaypointSeedingFrom(const ParamSet& params);
 
-// The most control points of a seeded waypoint path.
-inline constexpr int kMaxSeededControlPoints = 64;
+// The most control points of a seeded waypoint path: one per vertex and per segment of a seed
+// up to 512 vertices (exact paths with a clearance on 512-cell maps have several hundred, around
+// the inflated corners). A seed with more keeps evenly spaced vertices, and with every offset 0
+// its path then cuts the corners it dropped.
+inline constexpr int kMaxSeededControlPoints = 1024;
 
 // Builds the objective of a waypoint planner for the problem's 2D map.
 PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitnessOptions& options,
