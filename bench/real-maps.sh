@@ -130,31 +130,34 @@ def improvable(r):
     f0, pen = num(r, "seed_objective"), num(r, "seed_penalty")
     return f0 is not None and pen is not None and pen > 1e-6 * f0
 
-for m in maps:
-    F = rows("fleet", m)
-    for p in planners:
-        rs = [r for r in F if r["planner"] == p]
-        if not rs:
-            continue
-        succ, med, worst, sec = cell(rs)
-        ok = [r for r in rs if r["success"] == "true"]
-        room = [r for r in ok if improvable(r)]
-        gains = [1 - num(r, "objective") / num(r, "seed_objective") for r in room]
-        better = sum(1 for r in room if num(r, "objective") < num(r, "seed_objective") * (1 - 1e-9))
-        gain = f"{100 * statistics.median(gains):.1f} %" if gains else "–"
-        bounded = sum(1 for r in ok if num(r, "max_curvature") is not None
-                      and num(r, "max_curvature") <= 0.5 * (1 + 1e-6))
-        totals["runs"] += len(rs)
-        totals["ok"] += len(ok)
-        totals["improvable"] += len(room)
-        totals["better"] += better
-        totals["bounded"] += bounded
-        totals["gains"] += gains
-        ratios = [num(r, "ratio") for r in ok if num(r, "ratio") is not None]
-        totals["ratios"] += ratios
-        totals["within"] += sum(1 for x in ratios if x <= 1.10)
-        print(f"| {m} | {p} | {succ} | {med} | {worst} | {len(room)}/{len(ok)} | {better}/{len(room)} | "
-              f"{gain} | {bounded}/{len(ok)} | {sec} |")
+def groups(kind):
+    """(map, planner, rows, successful rows) of every planner with rows in the kind's CSVs."""
+    for m in maps:
+        every = rows(kind, m)
+        for p in planners:
+            rs = [r for r in every if r["planner"] == p]
+            if rs:
+                yield m, p, rs, [r for r in rs if r["success"] == "true"]
+
+for m, p, rs, ok in groups("fleet"):
+    succ, med, worst, sec = cell(rs)
+    room = [r for r in ok if improvable(r)]
+    gains = [1 - num(r, "objective") / num(r, "seed_objective") for r in room]
+    better = sum(1 for r in room if num(r, "objective") < num(r, "seed_objective") * (1 - 1e-9))
+    gain = f"{100 * statistics.median(gains):.1f} %" if gains else "–"
+    bounded = sum(1 for r in ok if num(r, "max_curvature") is not None
+                  and num(r, "max_curvature") <= 0.5 * (1 + 1e-6))
+    totals["runs"] += len(rs)
+    totals["ok"] += len(ok)
+    totals["improvable"] += len(room)
+    totals["better"] += better
+    totals["bounded"] += bounded
+    totals["gains"] += gains
+    ratios = [num(r, "ratio") for r in ok if num(r, "ratio") is not None]
+    totals["ratios"] += ratios
+    totals["within"] += sum(1 for x in ratios if x <= 1.10)
+    print(f"| {m} | {p} | {succ} | {med} | {worst} | {len(room)}/{len(ok)} | {better}/{len(room)} | "
+          f"{gain} | {bounded}/{len(ok)} | {sec} |")
 
 t = totals
 if t["runs"]:
@@ -176,20 +179,14 @@ print("optimum of the result.\n")
 print("| map | planner | success | 2 alternatives | 3 corridors | >= 2 corridors | median ratio |")
 print("|---|---|---:|---:|---:|---:|---:|")
 alt = dict(ok=0, two=0, three=0, several=0)
-for m in maps:
-    A = rows("alternatives", m)
-    for p in planners:
-        rs = [r for r in A if r["planner"] == p]
-        if not rs:
-            continue
-        succ, med, _, _ = cell(rs)
-        ok = [r for r in rs if r["success"] == "true"]
-        two = sum(1 for r in ok if num(r, "alternatives") == 2)
-        three = sum(1 for r in ok if num(r, "distinct_corridors") == 3)
-        several = sum(1 for r in ok if (num(r, "distinct_corridors") or 0) >= 2)
-        for k, v in (("ok", len(ok)), ("two", two), ("three", three), ("several", several)):
-            alt[k] += v
-        print(f"| {m} | {p} | {succ} | {two}/{len(ok)} | {three}/{len(ok)} | {several}/{len(ok)} | {med} |")
+for m, p, rs, ok in groups("alternatives"):
+    succ, med, _, _ = cell(rs)
+    two = sum(1 for r in ok if num(r, "alternatives") == 2)
+    three = sum(1 for r in ok if num(r, "distinct_corridors") == 3)
+    several = sum(1 for r in ok if (num(r, "distinct_corridors") or 0) >= 2)
+    for k, v in (("ok", len(ok)), ("two", two), ("three", three), ("several", several)):
+        alt[k] += v
+    print(f"| {m} | {p} | {succ} | {two}/{len(ok)} | {three}/{len(ok)} | {several}/{len(ok)} | {med} |")
 if alt["ok"]:
     print(f"\nAlternatives totals: of {alt['ok']} successful runs, {alt['two']} returned two alternatives,")
     print(f"{alt['three']} three paths in pairwise distinct corridors, {alt['several']} at least two.")
