@@ -16,8 +16,11 @@ struct ServerConfig {
   int metrics_port = 9464;  // 0 disables the Prometheus endpoint; -1 picks a free port
   std::string metrics_address = "127.0.0.1";
   std::string data_dir = "./swarmplan-data";
-  int workers = 0;          // 0: the number of cores
-  int queue_capacity = 64;  // queued (not running) jobs
+  // sqlite:DIR or redis://HOST[:PORT][/DB]; empty: SQLite in data_dir (store_url.h).
+  std::string store;
+  std::string store_password_file;  // the Redis password, when the server asks for one
+  int workers = 0;                  // 0: the number of cores
+  int queue_capacity = 64;          // queued (not running) jobs
   // Finished jobs are kept in the store for job_retention, and at most max_retained_jobs of
   // them (the oldest beyond are deleted); job_cache_entries of them are also held in memory.
   absl::Duration job_retention = absl::Hours(24 * 7);

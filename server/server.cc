@@ -17,7 +17,7 @@
 #include "server/reflection.h"
 #include "server/rpc_metrics.h"
 #include "server/services.h"
-#include "server/sqlite_store.h"
+#include "server/store_url.h"
 
 namespace swarmplan::server {
 namespace {
@@ -47,7 +47,7 @@ absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> Credentials(const Serve
 struct Server::Impl {
   ServerConfig config;
   const Registry* registry = nullptr;
-  std::unique_ptr<SqliteStore> store;
+  std::unique_ptr<Store> store;
   Metrics metrics;
   std::unique_ptr<MapCatalog> maps;
   std::unique_ptr<JobManager> jobs;
@@ -83,7 +83,7 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
   absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> credentials = Credentials(config);
   if (!credentials.ok()) return credentials.status();
 
-  absl::StatusOr<std::unique_ptr<SqliteStore>> store = SqliteStore::Open(config.data_dir);
+  absl::StatusOr<std::unique_ptr<Store>> store = OpenStore(config);
   if (!store.ok()) return store.status();
   impl->store = std::move(*store);
 
@@ -146,10 +146,10 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
       health->SetServingStatus(service, true);
     }
   }
-  spdlog::info("swarmplan-server listening on port {} (metrics: {}, data: {}, auth: {}, tls: {})",
+  spdlog::info("swarmplan-server listening on port {} (metrics: {}, store: {}, auth: {}, tls: {})",
                impl->port,
                impl->metrics.port() > 0 ? absl::StrCat(impl->metrics.port()) : std::string("off"),
-               config.data_dir, impl->auth.enabled() ? "on" : "off",
+               DescribeStore(config), impl->auth.enabled() ? "on" : "off",
                config.tls_cert_file.empty() ? "off" : "on");
   return std::unique_ptr<Server>(new Server(std::move(impl)));
 }

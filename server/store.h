@@ -39,8 +39,8 @@ struct JobCursor {
 };
 
 // Durable storage of maps and jobs. A write that returned OK survives a crash of the process.
-// Thread-safe. The embedded implementation is SQLite (sqlite_store.h); a shared one (Redis) can
-// implement the same interface.
+// Thread-safe. The embedded implementation is SQLite (sqlite_store.h), the shared one Redis
+// (redis_store.h); store_url.h opens the one --store names.
 class Store {
  public:
   virtual ~Store() = default;

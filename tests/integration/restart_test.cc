@@ -183,12 +183,12 @@ int FreePort() {
 TEST(RestartTest, AcknowledgedMapsAndJobsSurviveKill9OfTheServerBinary) {
   TempDir dir;
   const int port = FreePort();
+  const std::string store = "--store=" + StoreUrlFor(dir.path());
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
     const std::string listen = "--listen=127.0.0.1:" + std::to_string(port);
-    const std::string data = "--data-dir=" + dir.path();
-    execl(SWARMPLAN_SERVER_BINARY, SWARMPLAN_SERVER_BINARY, listen.c_str(), data.c_str(),
+    execl(SWARMPLAN_SERVER_BINARY, SWARMPLAN_SERVER_BINARY, listen.c_str(), store.c_str(),
           "--metrics-port=0", "--log-level=warn", static_cast<char*>(nullptr));
     _exit(127);
   }

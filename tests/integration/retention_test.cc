@@ -178,6 +178,7 @@ TEST(RetentionTest, PagesContinueAcrossJobsInTheStore) {
 }
 
 TEST(RetentionTest, JobsStoredBeforeTheClientRequestIdColumnAreServedAndDeduplicated) {
+  if (TestingWithRedis()) GTEST_SKIP() << "an upgrade of the SQLite schema; Redis has no older one";
   TempDir dir;
   v1::Job old;
   old.set_id("job-0123456789abcdef");

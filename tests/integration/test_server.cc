@@ -7,8 +7,12 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 
+#include "absl/base/thread_annotations.h"
+#include "absl/synchronization/mutex.h"
 #include "absl/time/clock.h"
+#include "tests/integration/redis_test_server.h"
 
 namespace swarmplan::testing {
 namespace {
@@ -68,7 +72,35 @@ Registry MakeTestRegistry() {
   return registry;
 }
 
+absl::Mutex redis_mu;
+// The redis-server of each data directory, in Redis mode.
+std::map<std::string, std::unique_ptr<RedisTestServer>>& RedisServers()
+    ABSL_EXCLUSIVE_LOCKS_REQUIRED(redis_mu) {
+  static auto* servers = new std::map<std::string, std::unique_ptr<RedisTestServer>>();
+  return *servers;
+}
+
 }  // namespace
+
+bool TestingWithRedis() {
+  const char* store = std::getenv("SWARMPLAN_TEST_STORE");
+  return store != nullptr && std::string(store) == "redis";
+}
+
+std::string StoreUrlFor(const std::string& data_dir) {
+  if (!TestingWithRedis()) return "sqlite:" + data_dir;
+  absl::MutexLock lock(&redis_mu);
+  std::unique_ptr<RedisTestServer>& redis = RedisServers()[data_dir];
+  if (redis == nullptr) {
+    absl::StatusOr<std::unique_ptr<RedisTestServer>> started = RedisTestServer::Start(data_dir);
+    if (!started.ok()) {
+      ADD_FAILURE() << started.status();
+      std::abort();
+    }
+    redis = std::move(*started);
+  }
+  return redis->url();
+}
 
 const Registry& TestRegistry() {
   static const Registry* registry = new Registry(MakeTestRegistry());
@@ -82,6 +114,10 @@ TempDir::TempDir() {
 }
 
 TempDir::~TempDir() {
+  {
+    absl::MutexLock lock(&redis_mu);
+    RedisServers().erase(path_);
+  }
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
 }
@@ -98,6 +134,7 @@ server::ServerConfig TestServer::DefaultConfig() {
 TestServer::TestServer(const std::string& data_dir, server::ServerConfig config) {
   config.listen = "127.0.0.1:0";
   config.data_dir = data_dir;
+  if (TestingWithRedis()) config.store = StoreUrlFor(data_dir);
   config.metrics_port = -1;
   config.metrics_address = "127.0.0.1";
   absl::StatusOr<std::unique_ptr<server::Server>> server =

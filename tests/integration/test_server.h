@@ -21,7 +21,13 @@ namespace swarmplan::testing {
 // It gives the cancel, deadline and queue tests a job that runs as long as they need.
 const Registry& TestRegistry();
 
-// A temporary data directory under /tmp, removed at destruction.
+// Whether the suite runs against Redis (SWARMPLAN_TEST_STORE=redis) rather than SQLite.
+bool TestingWithRedis();
+// The --store URL of the test store in `data_dir`: sqlite:DATA_DIR, or with Redis the URL of a
+// redis-server started for that directory (its AOF there), kept until the TempDir goes.
+std::string StoreUrlFor(const std::string& data_dir);
+
+// A temporary data directory under /tmp, removed at destruction (with its redis-server).
 class TempDir {
  public:
   TempDir();
@@ -35,7 +41,7 @@ class TempDir {
 // A server running in-process on 127.0.0.1 (a port gRPC picks) with stubs of every service.
 class TestServer {
  public:
-  // `config` overrides: listen, data_dir and metrics_port are set here.
+  // `config` overrides: listen, data_dir, store and metrics_port are set here.
   explicit TestServer(const std::string& data_dir, server::ServerConfig config = DefaultConfig());
   ~TestServer();
 

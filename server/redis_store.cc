@@ -1,0 +1,320 @@
+#include "server/redis_store.h"
+
+#include <algorithm>
+#include <tuple>
+
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_format.h"
+
+namespace swarmplan::server {
+namespace {
+
+// Every script takes the key prefix as ARGV[1].
+constexpr const char* kPutMap = R"lua(
+local p = ARGV[1]
+local key = p .. 'map:' .. ARGV[2]
+redis.call('DEL', key)
+redis.call('HSET', key, 'name', ARGV[3], 'format', ARGV[4], 'content_hash', ARGV[5],
+           'source', ARGV[6], 'created_us', ARGV[7])
+redis.call('SADD', p .. 'maps', ARGV[2])
+return 1
+)lua";
+
+constexpr const char* kDeleteMap = R"lua(
+local p = ARGV[1]
+redis.call('SREM', p .. 'maps', ARGV[2])
+return redis.call('DEL', p .. 'map:' .. ARGV[2])
+)lua";
+
+constexpr const char* kGetMaps = R"lua(
+local p = ARGV[1]
+local out = {}
+for i = 2, #ARGV do
+  out[#out + 1] = redis.call('HMGET', p .. 'map:' .. ARGV[i], 'name', 'format', 'content_hash',
+                             'source', 'created_us')
+end
+return out
+)lua";
+
+// Removes a job from every index it is in (its hash says which).
+constexpr const char* kUnindexJob = R"lua(
+local function unindex(p, id)
+  local key = p .. 'job:' .. id
+  local old = redis.call('HMGET', key, 'state', 'created_us', 'client_request_id')
+  if old[1] then
+    local member = old[2] .. ':' .. id
+    redis.call('ZREM', p .. 'jobs', member)
+    redis.call('ZREM', p .. 'jobs:state:' .. old[1], member)
+    redis.call('ZREM', p .. 'jobs:unfinished', member)
+    if old[3] and old[3] ~= '' then redis.call('ZREM', p .. 'crid:' .. old[3], member) end
+  end
+  redis.call('ZREM', p .. 'jobs:finished', id)
+  redis.call('DEL', key)
+end
+)lua";
+
+// ARGV: prefix, id, state, record, created_us (20 digits), finished_us ('' while unfinished),
+// client_request_id.
+const std::string& PutJobScript() {
+  static const auto* script = new std::string(absl::StrCat(kUnindexJob, R"lua(
+local p, id, state, created, finished, crid = ARGV[1], ARGV[2], ARGV[3], ARGV[5], ARGV[6], ARGV[7]
+unindex(p, id)
+local key = p .. 'job:' .. id
+local member = created .. ':' .. id
+redis.call('HSET', key, 'state', state, 'record', ARGV[4], 'created_us', created,
+           'client_request_id', crid)
+redis.call('ZADD', p .. 'jobs', 0, member)
+redis.call('ZADD', p .. 'jobs:state:' .. state, 0, member)
+if finished == '' then
+  redis.call('ZADD', p .. 'jobs:unfinished', 0, member)
+else
+  redis.call('HSET', key, 'finished_us', finished)
+  redis.call('ZADD', p .. 'jobs:finished', finished, id)
+end
+if crid ~= '' then redis.call('ZADD', p .. 'crid:' .. crid, 0, member) end
+return 1
+)lua"));
+  return *script;
+}
+
+// ARGV: prefix, ids...; deletes those still finished and returns them.
+const std::string& DeleteFinishedScript() {
+  static const auto* script = new std::string(absl::StrCat(kUnindexJob, R"lua(
+local p = ARGV[1]
+local deleted = {}
+for i = 2, #ARGV do
+  if redis.call('HEXISTS', p .. 'job:' .. ARGV[i], 'finished_us') == 1 then
+    unindex(p, ARGV[i])
+    deleted[#deleted + 1] = ARGV[i]
+  end
+end
+return deleted
+)lua"));
+  return *script;
+}
+
+constexpr const char* kGetJobs = R"lua(
+local p = ARGV[1]
+local out = {}
+for i = 2, #ARGV do
+  out[#out + 1] = redis.call('HMGET', p .. 'job:' .. ARGV[i], 'state', 'record', 'created_us',
+                             'finished_us', 'client_request_id')
+end
+return out
+)lua";
+
+// Ids per script call when deleting many jobs.
+constexpr size_t kDeleteBatch = 500;
+
+std::string Micros(absl::Time t) { return absl::StrCat(absl::ToUnixMicros(t)); }
+
+// Sorted-set members order lexicographically: a zero-padded time orders them by time, then id.
+std::string Padded(int64_t us) { return absl::StrFormat("%020d", std::max<int64_t>(us, 0)); }
+std::string Member(int64_t created_us, const std::string& id) {
+  return absl::StrCat(Padded(created_us), ":", id);
+}
+std::string IdOfMember(const std::string& member) {
+  const size_t colon = member.find(':');
+  return colon == std::string::npos ? member : member.substr(colon + 1);
+}
+
+absl::Status Corrupt(const std::string& what, const std::string& id) {
+  return absl::DataLossError(absl::StrCat(what, " '", id, "': stored fields are corrupt"));
+}
+
+int64_t ParseMicros(const RedisReply& r, bool* ok) {
+  int64_t us = 0;
+  if (r.type != RedisReply::Type::kString || !absl::SimpleAtoi(r.str, &us)) *ok = false;
+  return us;
+}
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<RedisStore>> RedisStore::Open(const RedisEndpoint& endpoint,
+                                                             std::string prefix) {
+  absl::StatusOr<std::unique_ptr<RedisClient>> client = RedisClient::Connect(endpoint);
+  if (!client.ok()) return client.status();
+  return std::unique_ptr<RedisStore>(new RedisStore(std::move(*client), std::move(prefix)));
+}
+
+absl::Status RedisStore::PutMap(const StoredMap& map) {
+  return client_
+      ->Eval(kPutMap, {},
+             {prefix_, map.id, map.name, map.format, map.content_hash, map.source,
+              Micros(map.created_at)})
+      .status();
+}
+
+absl::StatusOr<StoredMap> RedisStore::GetMap(const std::string& id) {
+  absl::StatusOr<RedisReply> reply = client_->Eval(kGetMaps, {}, {prefix_, id});
+  if (!reply.ok()) return reply.status();
+  const std::vector<RedisReply>& f = reply->elements.at(0).elements;
+  if (f.size() != 5 || f[0].nil()) {
+    return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  }
+  bool ok = true;
+  StoredMap map{id,       f[0].str, f[1].str,
+                f[2].str, f[3].str, absl::FromUnixMicros(ParseMicros(f[4], &ok))};
+  if (!ok) return Corrupt("map", id);
+  return map;
+}
+
+absl::StatusOr<std::vector<StoredMap>> RedisStore::LoadMaps() {
+  absl::StatusOr<RedisReply> ids = client_->Command({"SMEMBERS", prefix_ + "maps"});
+  if (!ids.ok()) return ids.status();
+  std::vector<StoredMap> maps;
+  for (const RedisReply& id : ids->elements) {
+    absl::StatusOr<StoredMap> map = GetMap(id.str);
+    if (absl::IsNotFound(map.status())) continue;  // deleted meanwhile
+    if (!map.ok()) return map.status();
+    maps.push_back(std::move(*map));
+  }
+  std::sort(maps.begin(), maps.end(), [](const StoredMap& a, const StoredMap& b) {
+    return std::tie(a.created_at, a.id) < std::tie(b.created_at, b.id);
+  });
+  return maps;
+}
+
+absl::Status RedisStore::DeleteMap(const std::string& id) {
+  absl::StatusOr<RedisReply> deleted = client_->Eval(kDeleteMap, {}, {prefix_, id});
+  if (!deleted.ok()) return deleted.status();
+  if (deleted->integer == 0) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return absl::OkStatus();
+}
+
+absl::Status RedisStore::PutJob(const StoredJob& job) {
+  return client_
+      ->Eval(PutJobScript(), {},
+             {prefix_, job.id, absl::StrCat(job.state), job.record,
+              Padded(absl::ToUnixMicros(job.created_at)),
+              job.finished_at == absl::InfiniteFuture() ? "" : Micros(job.finished_at),
+              job.client_request_id})
+      .status();
+}
+
+absl::StatusOr<std::vector<StoredJob>> RedisStore::GetJobs(const std::vector<std::string>& ids) {
+  std::vector<StoredJob> jobs;
+  if (ids.empty()) return jobs;
+  std::vector<std::string> args = {prefix_};
+  args.insert(args.end(), ids.begin(), ids.end());
+  absl::StatusOr<RedisReply> reply = client_->Eval(kGetJobs, {}, args);
+  if (!reply.ok()) return reply.status();
+  for (size_t i = 0; i < ids.size() && i < reply->elements.size(); ++i) {
+    const std::vector<RedisReply>& f = reply->elements[i].elements;
+    if (f.size() != 5 || f[0].nil()) continue;  // deleted meanwhile
+    StoredJob job;
+    job.id = ids[i];
+    bool ok = absl::SimpleAtoi(f[0].str, &job.state);
+    job.record = f[1].str;
+    job.created_at = absl::FromUnixMicros(ParseMicros(f[2], &ok));
+    if (!f[3].nil()) job.finished_at = absl::FromUnixMicros(ParseMicros(f[3], &ok));
+    job.client_request_id = f[4].str;
+    if (!ok) return Corrupt("job", ids[i]);
+    jobs.push_back(std::move(job));
+  }
+  return jobs;
+}
+
+absl::StatusOr<StoredJob> RedisStore::GetJob(const std::string& id) {
+  absl::StatusOr<std::vector<StoredJob>> jobs = GetJobs({id});
+  if (!jobs.ok()) return jobs.status();
+  if (jobs->empty()) return absl::NotFoundError(absl::StrCat("job '", id, "' not found"));
+  return std::move(jobs->front());
+}
+
+absl::StatusOr<std::vector<std::string>> RedisStore::NewestMembers(const std::string& key,
+                                                                   const JobCursor* before,
+                                                                   int limit) {
+  const std::string max =
+      before == nullptr ? "+" : absl::StrCat("(", Member(before->created_us, before->id));
+  absl::StatusOr<RedisReply> reply = client_->Command(
+      {"ZRANGE", key, max, "-", "BYLEX", "REV", "LIMIT", "0", absl::StrCat(std::max(limit, 0))});
+  if (!reply.ok()) return reply.status();
+  std::vector<std::string> members;
+  for (const RedisReply& m : reply->elements) members.push_back(m.str);
+  return members;
+}
+
+absl::StatusOr<StoredJob> RedisStore::FindJobByClientRequestId(const std::string& id) {
+  absl::StatusOr<std::vector<std::string>> newest =
+      NewestMembers(prefix_ + "crid:" + id, nullptr, 1);
+  if (!newest.ok()) return newest.status();
+  absl::StatusOr<StoredJob> job =
+      newest->empty() ? absl::NotFoundError("") : GetJob(IdOfMember(newest->front()));
+  if (absl::IsNotFound(job.status())) {
+    return absl::NotFoundError(absl::StrCat("no job with client_request_id '", id, "'"));
+  }
+  return job;
+}
+
+absl::StatusOr<std::vector<StoredJob>> RedisStore::LoadJobsToRecover() {
+  absl::StatusOr<RedisReply> members =
+      client_->Command({"ZRANGE", prefix_ + "jobs:unfinished", "-", "+", "BYLEX"});
+  if (!members.ok()) return members.status();
+  std::vector<std::string> ids;
+  for (const RedisReply& m : members->elements) ids.push_back(IdOfMember(m.str));
+  return GetJobs(ids);
+}
+
+absl::StatusOr<std::vector<StoredJob>> RedisStore::ListJobs(const JobCursor* before,
+                                                            const std::vector<int>& states,
+                                                            int limit) {
+  std::vector<std::string> keys;
+  if (states.empty()) keys.push_back(prefix_ + "jobs");
+  for (int state : states) keys.push_back(absl::StrCat(prefix_, "jobs:state:", state));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::vector<std::string> members;
+  for (const std::string& key : keys) {
+    absl::StatusOr<std::vector<std::string>> newest = NewestMembers(key, before, limit);
+    if (!newest.ok()) return newest.status();
+    members.insert(members.end(), newest->begin(), newest->end());
+  }
+  std::sort(members.begin(), members.end(), std::greater<>());
+  if (members.size() > static_cast<size_t>(std::max(limit, 0))) members.resize(limit);
+  std::vector<std::string> ids;
+  for (const std::string& m : members) ids.push_back(IdOfMember(m));
+  return GetJobs(ids);
+}
+
+absl::StatusOr<int64_t> RedisStore::CountFinishedJobs() {
+  absl::StatusOr<RedisReply> n = client_->Command({"ZCARD", prefix_ + "jobs:finished"});
+  if (!n.ok()) return n.status();
+  return n->integer;
+}
+
+absl::StatusOr<std::vector<std::string>> RedisStore::DeleteFinished(
+    const std::vector<std::string>& ids) {
+  std::vector<std::string> deleted;
+  for (size_t first = 0; first < ids.size(); first += kDeleteBatch) {
+    std::vector<std::string> args = {prefix_};
+    const size_t last = std::min(ids.size(), first + kDeleteBatch);
+    args.insert(args.end(), ids.begin() + first, ids.begin() + last);
+    absl::StatusOr<RedisReply> reply = client_->Eval(DeleteFinishedScript(), {}, args);
+    if (!reply.ok()) return reply.status();
+    for (const RedisReply& id : reply->elements) deleted.push_back(id.str);
+  }
+  return deleted;
+}
+
+absl::StatusOr<std::vector<std::string>> RedisStore::DeleteJobsFinishedBefore(absl::Time cutoff) {
+  absl::StatusOr<RedisReply> ids = client_->Command(
+      {"ZRANGE", prefix_ + "jobs:finished", "-inf", absl::StrCat("(", Micros(cutoff)), "BYSCORE"});
+  if (!ids.ok()) return ids.status();
+  std::vector<std::string> selected;
+  for (const RedisReply& id : ids->elements) selected.push_back(id.str);
+  return DeleteFinished(selected);
+}
+
+absl::StatusOr<std::vector<std::string>> RedisStore::DeleteOldestFinishedJobs(int64_t n) {
+  if (n <= 0) return std::vector<std::string>();
+  absl::StatusOr<RedisReply> ids =
+      client_->Command({"ZRANGE", prefix_ + "jobs:finished", "0", absl::StrCat(n - 1)});
+  if (!ids.ok()) return ids.status();
+  std::vector<std::string> selected;
+  for (const RedisReply& id : ids->elements) selected.push_back(id.str);
+  return DeleteFinished(selected);
+}
+
+}  // namespace swarmplan::server

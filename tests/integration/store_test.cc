@@ -1,0 +1,293 @@
+// The Store contract, checked against both stores: the embedded SQLite one and the shared Redis
+// one (a real redis-server on a free loopback port; skipped when it is not installed).
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "absl/time/clock.h"
+#include "google/protobuf/util/message_differencer.h"
+#include "server/config.h"
+#include "server/redis_store.h"
+#include "server/sqlite_store.h"
+#include "server/store_url.h"
+#include "tests/integration/redis_test_server.h"
+#include "tests/integration/test_server.h"
+
+namespace swarmplan::testing {
+namespace {
+
+using server::JobCursor;
+using server::StoredJob;
+using server::StoredMap;
+
+const absl::Time kT0 = absl::FromUnixSeconds(1'800'000'000);
+
+StoredJob Job(const std::string& id, int state, absl::Time created, const std::string& crid = "",
+              absl::Time finished = absl::InfiniteFuture()) {
+  StoredJob job;
+  job.id = id;
+  job.state = state;
+  job.record = "record of " + id + std::string("\0\xff", 2);
+  job.created_at = created;
+  job.finished_at = finished;
+  job.client_request_id = crid;
+  return job;
+}
+
+std::vector<std::string> Ids(const std::vector<StoredJob>& jobs) {
+  std::vector<std::string> ids;
+  for (const StoredJob& j : jobs) ids.push_back(j.id);
+  return ids;
+}
+
+class StoreTest : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    if (GetParam() == "redis") {
+      absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_.path());
+      if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+      ASSERT_TRUE(redis.ok()) << redis.status();
+      redis_ = std::move(*redis);
+    }
+    Reopen();
+  }
+
+  void Reopen() {
+    store_.reset();
+    server::ServerConfig config;
+    config.store = redis_ != nullptr ? redis_->url() : "sqlite:" + dir_.path();
+    absl::StatusOr<std::unique_ptr<server::Store>> store = server::OpenStore(config);
+    ASSERT_TRUE(store.ok()) << store.status();
+    store_ = std::move(*store);
+  }
+
+  server::Store& store() { return *store_; }
+
+  TempDir dir_;
+  std::unique_ptr<RedisTestServer> redis_;
+  std::unique_ptr<server::Store> store_;
+};
+
+TEST_P(StoreTest, MapsArePutReadListedOldestFirstAndDeleted) {
+  const std::string source("binary\0source", 13);
+  ASSERT_TRUE(store().PutMap({"map-b", "second", "ascii", "h2", source, kT0}).ok());
+  ASSERT_TRUE(store().PutMap({"map-a", "first", "ascii", "h1", "s1", kT0}).ok());
+  ASSERT_TRUE(store().PutMap({"map-c", "third", "png", "h3", "s3", kT0 - absl::Seconds(1)}).ok());
+
+  absl::StatusOr<StoredMap> b = store().GetMap("map-b");
+  ASSERT_TRUE(b.ok()) << b.status();
+  EXPECT_EQ(b->name, "second");
+  EXPECT_EQ(b->source, source);
+  EXPECT_EQ(b->created_at, kT0);
+
+  absl::StatusOr<std::vector<StoredMap>> all = store().LoadMaps();
+  ASSERT_TRUE(all.ok()) << all.status();
+  ASSERT_EQ(all->size(), 3u);
+  EXPECT_EQ((*all)[0].id, "map-c");  // oldest first, then by id
+  EXPECT_EQ((*all)[1].id, "map-a");
+  EXPECT_EQ((*all)[2].id, "map-b");
+
+  EXPECT_TRUE(store().DeleteMap("map-a").ok());
+  EXPECT_TRUE(absl::IsNotFound(store().DeleteMap("map-a")));
+  EXPECT_TRUE(absl::IsNotFound(store().GetMap("map-a").status()));
+  EXPECT_EQ(store().LoadMaps()->size(), 2u);
+}
+
+TEST_P(StoreTest, AJobPutAgainReplacesItsRecordAndMovesBetweenStates) {
+  ASSERT_TRUE(store().PutJob(Job("job-1", 1, kT0, "order-7")).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-1", 2, kT0, "order-7")).ok());
+  StoredJob finished = Job("job-1", 3, kT0, "order-7", kT0 + absl::Seconds(5));
+  finished.record = "final";
+  ASSERT_TRUE(store().PutJob(finished).ok());
+
+  absl::StatusOr<StoredJob> got = store().GetJob("job-1");
+  ASSERT_TRUE(got.ok()) << got.status();
+  EXPECT_EQ(got->state, 3);
+  EXPECT_EQ(got->record, "final");
+  EXPECT_EQ(got->finished_at, kT0 + absl::Seconds(5));
+  EXPECT_EQ(got->client_request_id, "order-7");
+  EXPECT_TRUE(got->client_request_id_known);
+
+  EXPECT_TRUE(store().ListJobs(nullptr, {1}, 10)->empty());
+  EXPECT_TRUE(store().ListJobs(nullptr, {2}, 10)->empty());
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {3}, 10)), std::vector<std::string>{"job-1"});
+  EXPECT_TRUE(store().LoadJobsToRecover()->empty());
+  EXPECT_EQ(*store().CountFinishedJobs(), 1);
+  EXPECT_TRUE(absl::IsNotFound(store().GetJob("job-2").status()));
+}
+
+TEST_P(StoreTest, AClientRequestIdFindsItsNewestJob) {
+  ASSERT_TRUE(store().PutJob(Job("job-old", 1, kT0, "order-1")).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-new", 1, kT0 + absl::Seconds(1), "order-1")).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-other", 1, kT0 + absl::Seconds(2), "order-2")).ok());
+  absl::StatusOr<StoredJob> found = store().FindJobByClientRequestId("order-1");
+  ASSERT_TRUE(found.ok()) << found.status();
+  EXPECT_EQ(found->id, "job-new");
+  EXPECT_TRUE(absl::IsNotFound(store().FindJobByClientRequestId("order-3").status()));
+}
+
+TEST_P(StoreTest, UnfinishedJobsAreRecoveredOldestFirst) {
+  ASSERT_TRUE(store().PutJob(Job("job-b", 2, kT0 + absl::Seconds(2))).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-a", 1, kT0 + absl::Seconds(1))).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-done", 3, kT0, "", kT0 + absl::Seconds(3))).ok());
+  absl::StatusOr<std::vector<StoredJob>> recover = store().LoadJobsToRecover();
+  ASSERT_TRUE(recover.ok()) << recover.status();
+  EXPECT_EQ(Ids(*recover), (std::vector<std::string>{"job-a", "job-b"}));
+}
+
+TEST_P(StoreTest, ListingIsNewestFirstThenByIdAndContinuesAfterACursor) {
+  // Two jobs share a creation time: the id breaks the tie.
+  ASSERT_TRUE(store().PutJob(Job("job-1", 1, kT0)).ok());
+  ASSERT_TRUE(
+      store().PutJob(Job("job-2", 3, kT0 + absl::Seconds(1), "", kT0 + absl::Seconds(9))).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-3", 2, kT0 + absl::Seconds(1))).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-4", 1, kT0 + absl::Seconds(2))).ok());
+
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {}, 10)),
+            (std::vector<std::string>{"job-4", "job-3", "job-2", "job-1"}));
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {}, 2)), (std::vector<std::string>{"job-4", "job-3"}));
+  const JobCursor after_job3{absl::ToUnixMicros(kT0 + absl::Seconds(1)), "job-3"};
+  EXPECT_EQ(Ids(*store().ListJobs(&after_job3, {}, 10)),
+            (std::vector<std::string>{"job-2", "job-1"}));
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {1, 2}, 10)),
+            (std::vector<std::string>{"job-4", "job-3", "job-1"}));
+  EXPECT_EQ(Ids(*store().ListJobs(&after_job3, {1, 2}, 1)), (std::vector<std::string>{"job-1"}));
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {1, 1}, 10)),
+            (std::vector<std::string>{"job-4", "job-1"}));
+}
+
+TEST_P(StoreTest, FinishedJobsAreDeletedByAgeAndOldestFirst) {
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(store()
+                    .PutJob(Job("job-" + std::to_string(i), 3, kT0, "order-" + std::to_string(i),
+                                kT0 + absl::Seconds(10 - i)))
+                    .ok());
+  }
+  ASSERT_TRUE(store().PutJob(Job("job-running", 2, kT0)).ok());
+  EXPECT_EQ(*store().CountFinishedJobs(), 5);
+
+  // Finished at 10, 9, 8, 7, 6 s: the two before 8 s are job-4 and job-3.
+  absl::StatusOr<std::vector<std::string>> expired =
+      store().DeleteJobsFinishedBefore(kT0 + absl::Seconds(8));
+  ASSERT_TRUE(expired.ok()) << expired.status();
+  EXPECT_EQ(*expired, (std::vector<std::string>{"job-4", "job-3"}));
+  absl::StatusOr<std::vector<std::string>> oldest = store().DeleteOldestFinishedJobs(2);
+  ASSERT_TRUE(oldest.ok()) << oldest.status();
+  EXPECT_EQ(*oldest, (std::vector<std::string>{"job-2", "job-1"}));
+
+  EXPECT_EQ(*store().CountFinishedJobs(), 1);
+  EXPECT_EQ(Ids(*store().ListJobs(nullptr, {}, 10)),
+            (std::vector<std::string>{"job-running", "job-0"}));
+  EXPECT_TRUE(absl::IsNotFound(store().FindJobByClientRequestId("order-1").status()));
+  EXPECT_TRUE(store().FindJobByClientRequestId("order-0").ok());
+  EXPECT_TRUE(store().DeleteOldestFinishedJobs(0)->empty());
+}
+
+TEST_P(StoreTest, EverythingWrittenIsThereAfterTheStoreIsOpenedAgain) {
+  ASSERT_TRUE(store().PutMap({"map-a", "a", "ascii", "h", "s", kT0}).ok());
+  ASSERT_TRUE(store().PutJob(Job("job-1", 3, kT0, "order-1", kT0 + absl::Seconds(1))).ok());
+  if (redis_ != nullptr) {
+    // A crash of Redis itself: with appendfsync always every acknowledged write is in the AOF.
+    redis_->Kill();
+    ASSERT_TRUE(redis_->Restart().ok());
+  }
+  Reopen();
+  EXPECT_TRUE(store().GetMap("map-a").ok());
+  absl::StatusOr<StoredJob> job = store().FindJobByClientRequestId("order-1");
+  ASSERT_TRUE(job.ok()) << job.status();
+  EXPECT_EQ(job->record, Job("job-1", 3, kT0).record);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothStores, StoreTest, ::testing::Values("sqlite", "redis"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
+
+TEST(StoreUrlTest, BadStoreUrlsAreRefusedNamingTheFlag) {
+  for (const char* url : {"postgres://x", "sqlite:", "redis://", "redis://h:0", "redis://h:99999",
+                          "redis://h:6379/x", "redis://user:pw@h:6379"}) {
+    server::ServerConfig config;
+    config.store = url;
+    absl::StatusOr<std::unique_ptr<server::Store>> store = server::OpenStore(config);
+    ASSERT_FALSE(store.ok()) << url;
+    EXPECT_TRUE(absl::IsInvalidArgument(store.status())) << url << ": " << store.status();
+    EXPECT_NE(store.status().message().find("--store"), std::string::npos) << store.status();
+  }
+  absl::StatusOr<server::RedisEndpoint> endpoint =
+      server::ParseRedisUrl("redis://cache.local:6380/2", "--store");
+  ASSERT_TRUE(endpoint.ok()) << endpoint.status();
+  EXPECT_EQ(endpoint->host, "cache.local");
+  EXPECT_EQ(endpoint->port, 6380);
+  EXPECT_EQ(endpoint->db, 2);
+}
+
+TEST(StoreUrlTest, ARedisWithAPasswordTakesItFromTheFileOnly) {
+  TempDir dir;
+  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis =
+      RedisTestServer::Start(dir.path(), "s3cret-pass");
+  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+  ASSERT_TRUE(redis.ok()) << redis.status();
+
+  server::ServerConfig config;
+  config.store = (*redis)->url();
+  EXPECT_FALSE(server::OpenStore(config).ok());  // NOAUTH
+
+  config.store_password_file = dir.path() + "/absent";
+  absl::StatusOr<std::unique_ptr<server::Store>> store = server::OpenStore(config);
+  EXPECT_TRUE(absl::IsFailedPrecondition(store.status())) << store.status();
+
+  const std::string wrong = dir.path() + "/wrong";
+  FILE* f = fopen(wrong.c_str(), "w");
+  fputs("not-it\n", f);
+  fclose(f);
+  config.store_password_file = wrong;
+  store = server::OpenStore(config);
+  EXPECT_TRUE(absl::IsPermissionDenied(store.status())) << store.status();
+
+  const std::string right = dir.path() + "/password";
+  f = fopen(right.c_str(), "w");
+  fputs("s3cret-pass\n", f);
+  fclose(f);
+  config.store_password_file = right;
+  store = server::OpenStore(config);
+  ASSERT_TRUE(store.ok()) << store.status();
+  EXPECT_TRUE((*store)->PutMap({"map-a", "a", "ascii", "h", "s", kT0}).ok());
+  EXPECT_EQ(server::DescribeStore(config).find("s3cret"), std::string::npos);
+}
+
+TEST(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis) {
+  TempDir dir;
+  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir.path());
+  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+  ASSERT_TRUE(redis.ok()) << redis.status();
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.store = (*redis)->url();
+
+  std::string map_id;
+  v1::Job finished;
+  {
+    TestServer server(dir.path(), config);
+    map_id = server.UploadGrid("kept", 12, 6, 5);
+    const v1::Job job = server.SubmitOk(TestServer::Request(map_id, "astar", 11.5));
+    finished = server.WaitUntilFinal(job.id());
+    ASSERT_EQ(finished.state(), v1::JOB_STATE_SUCCEEDED);
+  }
+  (*redis)->Kill();
+  ASSERT_TRUE((*redis)->Restart().ok());
+
+  TestServer server(dir.path(), config);
+  v1::GetMapRequest get;
+  get.set_id(map_id);
+  v1::GetMapResponse map;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server.maps().GetMap(&context, get, &map).ok());
+  EXPECT_EQ(map.map().name(), "kept");
+  const v1::Job again = server.GetJob(finished.id());
+  EXPECT_EQ(again.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_TRUE(
+      google::protobuf::util::MessageDifferencer::Equals(again.result(), finished.result()));
+}
+
+}  // namespace
+}  // namespace swarmplan::testing
