@@ -26,6 +26,8 @@ struct ServerConfig {
   absl::Duration job_retention = absl::Hours(24 * 7);
   int max_retained_jobs = 100000;
   int job_cache_entries = 1000;
+  // Parsed maps held in memory; the others are parsed from the store when planned on.
+  int map_cache_entries = 16;
   absl::Duration shutdown_grace = absl::Seconds(10);
   // Limits.
   int max_message_bytes = 64 * 1024 * 1024;

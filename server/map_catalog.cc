@@ -1,6 +1,5 @@
 #include "server/map_catalog.h"
 
-#include <algorithm>
 #include <optional>
 
 #include "absl/status/status.h"
@@ -14,51 +13,59 @@
 namespace swarmplan::server {
 namespace {
 
-absl::StatusOr<std::shared_ptr<const CatalogEntry>> MakeEntry(const StoredMap& stored,
-                                                              const v1::MapSource& source,
-                                                              const LoadOptions& options) {
-  absl::StatusOr<Map> map = BuildMap(source, options);
-  if (!map.ok()) return map.status();
-  auto entry = std::make_shared<CatalogEntry>();
-  entry->info = DescribeMap(*map);
-  entry->info.set_id(stored.id);
-  entry->info.set_name(stored.name);
-  *entry->info.mutable_created_at() = ToProto(stored.created_at);
-  entry->info.set_content_hash(stored.content_hash);
-  entry->info.set_format(stored.format);
-  entry->map = std::make_shared<const Map>(std::move(*map));
-  return entry;
-}
-
-// Where a map stands in listings.
-PageKey KeyOf(const CatalogEntry& entry) {
-  return PageKey{absl::ToUnixMicros(FromProto(entry.info.created_at())), entry.info.id()};
-}
-
 constexpr char kListScope[] = "maps";
+
+// Maps per store read while Load looks for maps without a description.
+constexpr int kLoadBatch = 256;
+
+// The description of a stored map, as clients see it.
+absl::StatusOr<v1::MapInfo> InfoOf(const StoredMap& stored) {
+  v1::MapInfo info;
+  if (!info.ParseFromString(stored.info)) {
+    return absl::DataLossError(
+        absl::StrCat("map '", stored.id, "': stored description is corrupt"));
+  }
+  info.set_id(stored.id);
+  info.set_name(stored.name);
+  *info.mutable_created_at() = ToProto(stored.created_at);
+  info.set_content_hash(stored.content_hash);
+  info.set_format(stored.format);
+  return info;
+}
+
+absl::StatusOr<Map> Parse(const StoredMap& stored, const LoadOptions& options) {
+  v1::MapSource source;
+  if (!source.ParseFromString(stored.source)) {
+    return absl::DataLossError(absl::StrCat("map '", stored.id, "': stored source is corrupt"));
+  }
+  return BuildMap(source, options);
+}
 
 }  // namespace
 
 absl::StatusOr<std::vector<std::string>> MapCatalog::Load() {
-  absl::StatusOr<std::vector<StoredMap>> stored = store_.LoadMaps();
-  if (!stored.ok()) return stored.status();
   std::vector<std::string> warnings;
-  std::vector<std::shared_ptr<const CatalogEntry>> entries;
-  for (const StoredMap& m : *stored) {
-    v1::MapSource source;
-    if (!source.ParseFromString(m.source)) {
-      warnings.push_back(absl::StrCat("map ", m.id, ": stored source is corrupt"));
-      continue;
+  std::optional<MapCursor> after;
+  while (true) {
+    absl::StatusOr<std::vector<StoredMap>> batch =
+        store_.ListMaps(after.has_value() ? &*after : nullptr, kLoadBatch);
+    if (!batch.ok()) return batch.status();
+    for (const StoredMap& listed : *batch) {
+      if (!listed.info.empty()) continue;
+      absl::StatusOr<StoredMap> stored = store_.GetMap(listed.id);
+      if (absl::IsNotFound(stored.status())) continue;  // deleted meanwhile
+      if (!stored.ok()) return stored.status();
+      absl::StatusOr<Map> map = Parse(*stored, load_options_);
+      if (!map.ok()) {
+        warnings.push_back(absl::StrCat("map ", stored->id, ": ", map.status().message()));
+        continue;
+      }
+      DescribeMap(*map).SerializeToString(&stored->info);
+      if (absl::Status s = store_.PutMap(*stored); !s.ok()) return s;
     }
-    absl::StatusOr<std::shared_ptr<const CatalogEntry>> entry = MakeEntry(m, source, load_options_);
-    if (!entry.ok()) {
-      warnings.push_back(absl::StrCat("map ", m.id, ": ", entry.status().message()));
-      continue;
-    }
-    entries.push_back(std::move(*entry));
+    if (batch->size() < static_cast<size_t>(kLoadBatch)) break;
+    after = MapCursor{absl::ToUnixMicros(batch->back().created_at), batch->back().id};
   }
-  absl::MutexLock lock(&mu_);
-  entries_ = std::move(entries);
   return warnings;
 }
 
@@ -72,36 +79,83 @@ absl::StatusOr<MapCatalog::UploadResult> MapCatalog::Upload(const std::string& n
   stored.format = SourceFormat(source);
 
   absl::MutexLock upload_lock(&upload_mu_);
-  {
-    absl::MutexLock lock(&mu_);
-    for (const auto& e : entries_) {
-      if (e->info.name() == name && e->info.content_hash() == stored.content_hash) {
-        return UploadResult{e->info, false};
-      }
-    }
+  absl::StatusOr<StoredMap> same = store_.FindMap(name, stored.content_hash);
+  if (same.ok()) {
+    absl::StatusOr<v1::MapInfo> info = InfoOf(*same);
+    if (!info.ok()) return info.status();
+    return UploadResult{*std::move(info), false};
   }
+  if (!absl::IsNotFound(same.status())) return same.status();
+
+  absl::StatusOr<Map> map = BuildMap(source, load_options_);
+  if (!map.ok()) return map.status();
   stored.id = NewId("map-");
   // Microseconds: what the store keeps, so a map reads the same before and after a restart.
   stored.created_at = absl::FromUnixMicros(absl::ToUnixMicros(absl::Now()));
-  absl::StatusOr<std::shared_ptr<const CatalogEntry>> entry =
-      MakeEntry(stored, source, load_options_);
-  if (!entry.ok()) return entry.status();
+  DescribeMap(*map).SerializeToString(&stored.info);
   if (absl::Status s = store_.PutMap(stored); !s.ok()) return s;
+  absl::StatusOr<v1::MapInfo> info = InfoOf(stored);
+  if (!info.ok()) return info.status();
   absl::MutexLock lock(&mu_);
-  const PageKey key = KeyOf(**entry);
-  entries_.insert(std::upper_bound(entries_.begin(), entries_.end(), key,
-                                   [](const PageKey& k, const auto& e) { return k < KeyOf(*e); }),
-                  *entry);
-  return UploadResult{(*entry)->info, true};
+  Cache(stored.content_hash, std::make_shared<const Map>(*std::move(map)));
+  return UploadResult{*std::move(info), true};
 }
 
-absl::StatusOr<std::shared_ptr<const CatalogEntry>> MapCatalog::Get(const std::string& id) const {
-  if (id.empty()) return absl::InvalidArgumentError("map id: required");
-  absl::MutexLock lock(&mu_);
-  for (const auto& e : entries_) {
-    if (e->info.id() == id) return e;
+void MapCatalog::Cache(const std::string& content_hash, MapPtr map) {
+  if (auto it = cache_pos_.find(content_hash); it != cache_pos_.end()) {
+    cache_.splice(cache_.begin(), cache_, it->second);
+    return;
   }
-  return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  if (cache_entries_ <= 0) return;
+  cache_.emplace_front(content_hash, std::move(map));
+  cache_pos_[content_hash] = cache_.begin();
+  while (cache_.size() > static_cast<size_t>(cache_entries_)) {
+    cache_pos_.erase(cache_.back().first);
+    cache_.pop_back();
+  }
+}
+
+absl::StatusOr<MapPtr> MapCatalog::Parsed(const StoredMap& stored) {
+  {
+    absl::MutexLock lock(&mu_);
+    if (auto it = cache_pos_.find(stored.content_hash); it != cache_pos_.end()) {
+      MapPtr map = it->second->second;
+      Cache(stored.content_hash, map);  // most recently used now
+      return map;
+    }
+  }
+  absl::StatusOr<StoredMap> with_source = store_.GetMap(stored.id);
+  if (!with_source.ok()) return with_source.status();
+  absl::StatusOr<Map> map = Parse(*with_source, load_options_);
+  if (!map.ok()) {
+    return absl::FailedPreconditionError(absl::StrCat(
+        "map '", stored.id, "' no longer parses (", map.status().message(), "); upload it again"));
+  }
+  auto parsed = std::make_shared<const Map>(*std::move(map));
+  absl::MutexLock lock(&mu_);
+  Cache(stored.content_hash, parsed);
+  return parsed;
+}
+
+absl::StatusOr<std::shared_ptr<const CatalogEntry>> MapCatalog::Get(const std::string& id) {
+  if (id.empty()) return absl::InvalidArgumentError("map id: required");
+  absl::StatusOr<StoredMap> stored = store_.GetMapInfo(id);
+  if (!stored.ok()) return stored.status();
+  auto entry = std::make_shared<CatalogEntry>();
+  absl::StatusOr<v1::MapInfo> info = InfoOf(*stored);
+  if (!info.ok()) return info.status();
+  entry->info = *std::move(info);
+  absl::StatusOr<MapPtr> map = Parsed(*stored);
+  if (!map.ok()) return map.status();
+  entry->map = *std::move(map);
+  return entry;
+}
+
+absl::StatusOr<v1::MapInfo> MapCatalog::GetInfo(const std::string& id) const {
+  if (id.empty()) return absl::InvalidArgumentError("map id: required");
+  absl::StatusOr<StoredMap> stored = store_.GetMapInfo(id);
+  if (!stored.ok()) return stored.status();
+  return InfoOf(*stored);
 }
 
 absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const {
@@ -116,28 +170,30 @@ absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const
 
 absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size, size_t max_bytes,
                                                   const std::string& page_token) const {
-  std::optional<PageKey> after;
+  std::optional<MapCursor> after;
   if (!page_token.empty()) {
     absl::StatusOr<PageKey> key = DecodePageToken(page_token, kListScope);
     if (!key.ok()) return key.status();
-    after = std::move(*key);
+    after = MapCursor{key->created_us, key->id};
   }
-  absl::MutexLock lock(&mu_);
-  auto it = entries_.begin();
-  if (after.has_value()) {
-    it = std::upper_bound(entries_.begin(), entries_.end(), *after,
-                          [](const PageKey& k, const auto& e) { return k < KeyOf(*e); });
-  }
+  // One more row than the page says whether another page follows.
+  absl::StatusOr<std::vector<StoredMap>> rows =
+      store_.ListMaps(after.has_value() ? &*after : nullptr, page_size + 1);
+  if (!rows.ok()) return rows.status();
   Page page;
   size_t bytes = 0;
-  for (; it != entries_.end() && static_cast<int>(page.maps.size()) < page_size; ++it) {
-    const size_t item = (*it)->info.ByteSizeLong();
-    if (!FitsPage(bytes, item, max_bytes)) break;
-    bytes += item;
-    page.maps.push_back((*it)->info);
+  size_t used = 0;
+  for (; used < rows->size() && static_cast<int>(page.maps.size()) < page_size; ++used) {
+    absl::StatusOr<v1::MapInfo> info = InfoOf((*rows)[used]);
+    if (!info.ok()) return info.status();
+    if (!FitsPage(bytes, info->ByteSizeLong(), max_bytes)) break;
+    bytes += info->ByteSizeLong();
+    page.maps.push_back(*std::move(info));
   }
-  if (it != entries_.end() && !page.maps.empty()) {
-    page.next_page_token = EncodePageToken(KeyOf(**std::prev(it)), kListScope);
+  if (used < rows->size() && used > 0) {
+    const StoredMap& last = (*rows)[used - 1];
+    page.next_page_token =
+        EncodePageToken(PageKey{absl::ToUnixMicros(last.created_at), last.id}, kListScope);
   }
   return page;
 }
@@ -145,23 +201,17 @@ absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size, size_t max_byte
 absl::Status MapCatalog::Delete(const std::string& id) {
   if (id.empty()) return absl::InvalidArgumentError("id: required");
   absl::MutexLock upload_lock(&upload_mu_);
-  {
-    absl::MutexLock lock(&mu_);
-    auto it = std::find_if(entries_.begin(), entries_.end(),
-                           [&](const auto& e) { return e->info.id() == id; });
-    if (it == entries_.end()) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
-  }
-  if (absl::Status s = store_.DeleteMap(id); !s.ok()) return s;
-  absl::MutexLock lock(&mu_);
-  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                [&](const auto& e) { return e->info.id() == id; }),
-                 entries_.end());
-  return absl::OkStatus();
+  return store_.DeleteMap(id);
 }
 
-int MapCatalog::size() const {
+int64_t MapCatalog::size() const {
+  absl::StatusOr<int64_t> n = store_.CountMaps();
+  return n.ok() ? *n : -1;
+}
+
+int MapCatalog::cached() const {
   absl::MutexLock lock(&mu_);
-  return static_cast<int>(entries_.size());
+  return static_cast<int>(cache_.size());
 }
 
 }  // namespace swarmplan::server

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <list>
 #include <map>
 #include <memory>
 #include <string>
@@ -22,26 +23,31 @@ struct CatalogEntry {
   MapPtr map;
 };
 
-// The maps the server holds: parsed in memory, stored durably in the Store. Thread-safe.
+// The maps the server can plan on. The store holds every map and its description, so every
+// replica on a shared store sees the same maps; this process keeps only the parsed maps it
+// planned on last, at most `cache_entries` of them, keyed by content hash. Thread-safe.
 class MapCatalog {
  public:
-  MapCatalog(Store& store, LoadOptions load_options)
-      : store_(store), load_options_(std::move(load_options)) {}
+  MapCatalog(Store& store, LoadOptions load_options, int cache_entries)
+      : store_(store), load_options_(std::move(load_options)), cache_entries_(cache_entries) {}
 
-  // Parses every stored map. A stored map that no longer parses is skipped and reported in
-  // the returned list of warnings.
+  // Describes the stored maps an earlier version stored without a description (parsing each
+  // once). A map that no longer parses is reported in the returned warnings.
   absl::StatusOr<std::vector<std::string>> Load();
 
   struct UploadResult {
     v1::MapInfo info;
     bool created = false;
   };
-  // Parses, stores, then adds the map. Identical content under the same name returns the
+  // Parses, stores, then caches the map. Identical content under the same name returns the
   // stored map.
   absl::StatusOr<UploadResult> Upload(const std::string& name, const v1::MapSource& source);
 
-  // NOT_FOUND naming the id.
-  absl::StatusOr<std::shared_ptr<const CatalogEntry>> Get(const std::string& id) const;
+  // The map as stored now (NOT_FOUND naming the id when it is not), parsed: from the cache, or
+  // from the store's source.
+  absl::StatusOr<std::shared_ptr<const CatalogEntry>> Get(const std::string& id);
+  // The description alone, without parsing.
+  absl::StatusOr<v1::MapInfo> GetInfo(const std::string& id) const;
   absl::StatusOr<v1::MapSource> GetSource(const std::string& id) const;
   struct Page {
     std::vector<v1::MapInfo> maps;
@@ -52,14 +58,24 @@ class MapCatalog {
   // token List did not issue.
   absl::StatusOr<Page> List(int page_size, size_t max_bytes, const std::string& page_token) const;
   absl::Status Delete(const std::string& id);
-  int size() const;
+  // Maps in the store; -1 when the store cannot say.
+  int64_t size() const;
+  // Parsed maps held in memory.
+  int cached() const;
 
  private:
+  // The parsed map of `stored` (which carries its source), from the cache or parsed now.
+  absl::StatusOr<MapPtr> Parsed(const StoredMap& stored);
+  void Cache(const std::string& content_hash, MapPtr map) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+
   Store& store_;
   const LoadOptions load_options_;
+  const int cache_entries_;
   mutable absl::Mutex mu_;
-  // Ordered by KeyOf (creation time, then id); ids are unique.
-  std::vector<std::shared_ptr<const CatalogEntry>> entries_ ABSL_GUARDED_BY(mu_);
+  // Parsed maps by content hash, most recently used first.
+  std::list<std::pair<std::string, MapPtr>> cache_ ABSL_GUARDED_BY(mu_);
+  std::map<std::string, std::list<std::pair<std::string, MapPtr>>::iterator> cache_pos_
+      ABSL_GUARDED_BY(mu_);
   absl::Mutex upload_mu_;  // serialises uploads so identical concurrent uploads dedupe
 };
 

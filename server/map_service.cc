@@ -39,9 +39,9 @@ grpc::ServerUnaryReactor* MapServiceImpl::GetMap(grpc::CallbackServerContext* co
                                                  const v1::GetMapRequest* request,
                                                  v1::GetMapResponse* response) {
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
-  absl::StatusOr<std::shared_ptr<const CatalogEntry>> entry = maps_.Get(request->id());
-  if (!entry.ok()) return FinishUnary(context, ToGrpcStatus(entry.status()));
-  *response->mutable_map() = (*entry)->info;
+  absl::StatusOr<v1::MapInfo> info = maps_.GetInfo(request->id());
+  if (!info.ok()) return FinishUnary(context, ToGrpcStatus(info.status()));
+  *response->mutable_map() = *std::move(info);
   if (request->include_source()) {
     absl::StatusOr<v1::MapSource> source = maps_.GetSource(request->id());
     if (!source.ok()) return FinishUnary(context, ToGrpcStatus(source.status()));

@@ -95,7 +95,7 @@ struct Metrics::Impl {
           .Register(*registry)};
   prometheus::Gauge& maps = prometheus::BuildGauge()
                                 .Name("swarmplan_maps_stored")
-                                .Help("Maps held by the server")
+                                .Help("Maps in the store")
                                 .Register(*registry)
                                 .Add({});
   prometheus::Gauge& job_cache = prometheus::BuildGauge()
@@ -138,7 +138,9 @@ void Metrics::SetWorkers(int total) { impl_->workers.Set(total); }
 
 void Metrics::SetWorkersBusy(int busy) { impl_->busy.Set(busy); }
 
-void Metrics::SetMapsStored(int maps) { impl_->maps.Set(maps); }
+void Metrics::SetMapsStored(int64_t maps) {
+  if (maps >= 0) impl_->maps.Set(static_cast<double>(maps));
+}
 
 void Metrics::SetJobCacheEntries(int entries) { impl_->job_cache.Set(entries); }
 

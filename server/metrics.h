@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -17,7 +18,7 @@ namespace swarmplan::server {
 //   swarmplan_fitness_evaluations_total{algorithm}   fitness evaluations of finished jobs
 //   swarmplan_rpc_requests_total{method,code}        RPCs handled
 //   swarmplan_rpc_duration_seconds{method,code}      RPC latency (streams: until the end)
-//   swarmplan_maps_stored                            maps held
+//   swarmplan_maps_stored                            maps in the store
 //   swarmplan_job_cache_entries                      finished jobs held in memory (the rest:
 //                                                    in the store only)
 //   swarmplan_build_info{version}                    1
@@ -32,7 +33,7 @@ class Metrics {
   void SetQueueDepth(int depth);
   void SetWorkers(int total);
   void SetWorkersBusy(int busy);
-  void SetMapsStored(int maps);
+  void SetMapsStored(int64_t maps);  // ignored when negative (the store could not say)
   void SetJobCacheEntries(int entries);
   void RpcHandled(const std::string& method, const std::string& code, double seconds);
 

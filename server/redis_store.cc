@@ -1,7 +1,6 @@
 #include "server/redis_store.h"
 
 #include <algorithm>
-#include <tuple>
 
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
@@ -11,28 +10,50 @@ namespace swarmplan::server {
 namespace {
 
 // Every script takes the key prefix as ARGV[1].
-constexpr const char* kPutMap = R"lua(
-local p = ARGV[1]
-local key = p .. 'map:' .. ARGV[2]
-redis.call('DEL', key)
-redis.call('HSET', key, 'name', ARGV[3], 'format', ARGV[4], 'content_hash', ARGV[5],
-           'source', ARGV[6], 'created_us', ARGV[7])
-redis.call('SADD', p .. 'maps', ARGV[2])
+
+// Removes a map from every index it is in (its hash says which) and deletes it; returns whether
+// it existed.
+constexpr const char* kUnindexMap = R"lua(
+local function unindex_map(p, id)
+  local key = p .. 'map:' .. id
+  local old = redis.call('HMGET', key, 'created_us', 'content_hash', 'name')
+  if not old[1] then return 0 end
+  local member = old[1] .. ':' .. id
+  redis.call('ZREM', p .. 'maps', member)
+  redis.call('ZREM', p .. 'mapkey:' .. old[2] .. ':' .. old[3], member)
+  return redis.call('DEL', key)
+end
+)lua";
+
+// ARGV: prefix, id, name, format, content_hash, source, created_us (20 digits), info.
+const std::string& PutMapScript() {
+  static const auto* script = new std::string(absl::StrCat(kUnindexMap, R"lua(
+local p, id = ARGV[1], ARGV[2]
+unindex_map(p, id)
+local member = ARGV[7] .. ':' .. id
+redis.call('HSET', p .. 'map:' .. id, 'name', ARGV[3], 'format', ARGV[4], 'content_hash', ARGV[5],
+           'source', ARGV[6], 'created_us', ARGV[7], 'info', ARGV[8])
+redis.call('ZADD', p .. 'maps', 0, member)
+redis.call('ZADD', p .. 'mapkey:' .. ARGV[5] .. ':' .. ARGV[3], 0, member)
 return 1
-)lua";
+)lua"));
+  return *script;
+}
 
-constexpr const char* kDeleteMap = R"lua(
-local p = ARGV[1]
-redis.call('SREM', p .. 'maps', ARGV[2])
-return redis.call('DEL', p .. 'map:' .. ARGV[2])
-)lua";
+const std::string& DeleteMapScript() {
+  static const auto* script =
+      new std::string(absl::StrCat(kUnindexMap, "return unindex_map(ARGV[1], ARGV[2])\n"));
+  return *script;
+}
 
+// ARGV: prefix, '1' for the sources or '0', ids...
 constexpr const char* kGetMaps = R"lua(
 local p = ARGV[1]
 local out = {}
-for i = 2, #ARGV do
-  out[#out + 1] = redis.call('HMGET', p .. 'map:' .. ARGV[i], 'name', 'format', 'content_hash',
-                             'source', 'created_us')
+for i = 3, #ARGV do
+  local fields = {'name', 'format', 'content_hash', 'created_us', 'info'}
+  if ARGV[2] == '1' then fields[#fields + 1] = 'source' end
+  out[#out + 1] = redis.call('HMGET', p .. 'map:' .. ARGV[i], unpack(fields))
 end
 return out
 )lua";
@@ -140,44 +161,86 @@ absl::StatusOr<std::unique_ptr<RedisStore>> RedisStore::Open(const RedisEndpoint
 
 absl::Status RedisStore::PutMap(const StoredMap& map) {
   return client_
-      ->Eval(kPutMap, {},
+      ->Eval(PutMapScript(), {},
              {prefix_, map.id, map.name, map.format, map.content_hash, map.source,
-              Micros(map.created_at)})
+              Padded(absl::ToUnixMicros(map.created_at)), map.info})
       .status();
 }
 
-absl::StatusOr<StoredMap> RedisStore::GetMap(const std::string& id) {
-  absl::StatusOr<RedisReply> reply = client_->Eval(kGetMaps, {}, {prefix_, id});
-  if (!reply.ok()) return reply.status();
-  const std::vector<RedisReply>& f = reply->elements.at(0).elements;
-  if (f.size() != 5 || f[0].nil()) {
-    return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
-  }
-  bool ok = true;
-  StoredMap map{id,       f[0].str, f[1].str,
-                f[2].str, f[3].str, absl::FromUnixMicros(ParseMicros(f[4], &ok))};
-  if (!ok) return Corrupt("map", id);
-  return map;
-}
-
-absl::StatusOr<std::vector<StoredMap>> RedisStore::LoadMaps() {
-  absl::StatusOr<RedisReply> ids = client_->Command({"SMEMBERS", prefix_ + "maps"});
-  if (!ids.ok()) return ids.status();
+absl::StatusOr<std::vector<StoredMap>> RedisStore::GetMaps(const std::vector<std::string>& ids,
+                                                           bool with_source) {
   std::vector<StoredMap> maps;
-  for (const RedisReply& id : ids->elements) {
-    absl::StatusOr<StoredMap> map = GetMap(id.str);
-    if (absl::IsNotFound(map.status())) continue;  // deleted meanwhile
-    if (!map.ok()) return map.status();
-    maps.push_back(std::move(*map));
+  if (ids.empty()) return maps;
+  std::vector<std::string> args = {prefix_, with_source ? "1" : "0"};
+  args.insert(args.end(), ids.begin(), ids.end());
+  absl::StatusOr<RedisReply> reply = client_->Eval(kGetMaps, {}, args);
+  if (!reply.ok()) return reply.status();
+  for (size_t i = 0; i < ids.size() && i < reply->elements.size(); ++i) {
+    const std::vector<RedisReply>& f = reply->elements[i].elements;
+    if (f.size() < 5 || f[0].nil()) continue;  // deleted meanwhile
+    bool ok = true;
+    StoredMap map{ids[i],
+                  f[0].str,
+                  f[1].str,
+                  f[2].str,
+                  with_source && f.size() > 5 ? f[5].str : "",
+                  absl::FromUnixMicros(ParseMicros(f[3], &ok)),
+                  f[4].str};
+    if (!ok) return Corrupt("map", ids[i]);
+    maps.push_back(std::move(map));
   }
-  std::sort(maps.begin(), maps.end(), [](const StoredMap& a, const StoredMap& b) {
-    return std::tie(a.created_at, a.id) < std::tie(b.created_at, b.id);
-  });
   return maps;
 }
 
+absl::StatusOr<StoredMap> RedisStore::GetMap(const std::string& id) {
+  absl::StatusOr<std::vector<StoredMap>> maps = GetMaps({id}, /*with_source=*/true);
+  if (!maps.ok()) return maps.status();
+  if (maps->empty()) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return std::move(maps->front());
+}
+
+absl::StatusOr<StoredMap> RedisStore::GetMapInfo(const std::string& id) {
+  absl::StatusOr<std::vector<StoredMap>> maps = GetMaps({id}, /*with_source=*/false);
+  if (!maps.ok()) return maps.status();
+  if (maps->empty()) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return std::move(maps->front());
+}
+
+absl::StatusOr<std::vector<StoredMap>> RedisStore::ListMaps(const MapCursor* after, int limit) {
+  const std::string min =
+      after == nullptr ? "-" : absl::StrCat("(", Member(after->created_us, after->id));
+  absl::StatusOr<RedisReply> members =
+      client_->Command({"ZRANGE", prefix_ + "maps", min, "+", "BYLEX", "LIMIT", "0",
+                        absl::StrCat(std::max(limit, 0))});
+  if (!members.ok()) return members.status();
+  std::vector<std::string> ids;
+  for (const RedisReply& m : members->elements) ids.push_back(IdOfMember(m.str));
+  return GetMaps(ids, /*with_source=*/false);
+}
+
+absl::StatusOr<StoredMap> RedisStore::FindMap(const std::string& name,
+                                              const std::string& content_hash) {
+  absl::StatusOr<RedisReply> oldest =
+      client_->Command({"ZRANGE", absl::StrCat(prefix_, "mapkey:", content_hash, ":", name), "-",
+                        "+", "BYLEX", "LIMIT", "0", "1"});
+  if (!oldest.ok()) return oldest.status();
+  absl::StatusOr<StoredMap> map = oldest->elements.empty()
+                                      ? absl::NotFoundError("")
+                                      : GetMapInfo(IdOfMember(oldest->elements.front().str));
+  if (absl::IsNotFound(map.status())) {
+    return absl::NotFoundError(absl::StrCat("no map '", name, "' with that content"));
+  }
+  return map;
+}
+
+absl::StatusOr<int64_t> RedisStore::CountMaps() {
+  absl::StatusOr<RedisReply> n = client_->Command({"ZCARD", prefix_ + "maps"});
+  if (!n.ok()) return n.status();
+  return n->integer;
+}
+
 absl::Status RedisStore::DeleteMap(const std::string& id) {
-  absl::StatusOr<RedisReply> deleted = client_->Eval(kDeleteMap, {}, {prefix_, id});
+  absl::StatusOr<RedisReply> deleted = client_->Eval(DeleteMapScript(), {}, {prefix_, id});
   if (!deleted.ok()) return deleted.status();
   if (deleted->integer == 0) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
   return absl::OkStatus();

@@ -12,8 +12,10 @@ namespace swarmplan::server {
 // same maps and job records. Each write is one script, so Redis applies it whole or not at all;
 // how much an acknowledged write can lose when Redis itself crashes is Redis's appendfsync
 // setting (deploy/README.md). Keys, all under `prefix`:
-//   map:ID           hash: name, format, content_hash, source, created_us
-//   maps             set of map ids
+//   map:ID           hash: name, format, content_hash, source, created_us, info
+//   maps             sorted set, every map as "CREATED_US(20 digits):ID" (lexicographic order
+//                    is creation order, then id)
+//   mapkey:HASH:NAME the same, per content hash and name
 //   job:ID           hash: state, record, created_us, finished_us (when finished),
 //                    client_request_id
 //   jobs             sorted set, every job as "CREATED_US(20 digits):ID" (lexicographic order
@@ -30,7 +32,11 @@ class RedisStore final : public Store {
 
   absl::Status PutMap(const StoredMap& map) override;
   absl::StatusOr<StoredMap> GetMap(const std::string& id) override;
-  absl::StatusOr<std::vector<StoredMap>> LoadMaps() override;
+  absl::StatusOr<StoredMap> GetMapInfo(const std::string& id) override;
+  absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) override;
+  absl::StatusOr<StoredMap> FindMap(const std::string& name,
+                                    const std::string& content_hash) override;
+  absl::StatusOr<int64_t> CountMaps() override;
   absl::Status DeleteMap(const std::string& id) override;
   absl::Status PutJob(const StoredJob& job) override;
   absl::StatusOr<StoredJob> GetJob(const std::string& id) override;
@@ -48,6 +54,9 @@ class RedisStore final : public Store {
  private:
   RedisStore(std::unique_ptr<RedisClient> client, std::string prefix)
       : client_(std::move(client)), prefix_(std::move(prefix)) {}
+  // The maps with these ids that still exist, in the order given, with their sources or not.
+  absl::StatusOr<std::vector<StoredMap>> GetMaps(const std::vector<std::string>& ids,
+                                                 bool with_source);
   // The jobs with these ids that still exist, in the order given.
   absl::StatusOr<std::vector<StoredJob>> GetJobs(const std::vector<std::string>& ids);
   // Up to `limit` ids of the sorted set `key` (members "CREATED_US:ID"), newest first, before

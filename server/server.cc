@@ -90,7 +90,7 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
   LoadOptions load_options;
   load_options.limits.max_cells = config.max_map_cells;
   load_options.limits.max_file_bytes = config.max_message_bytes;
-  impl->maps = std::make_unique<MapCatalog>(*impl->store, load_options);
+  impl->maps = std::make_unique<MapCatalog>(*impl->store, load_options, config.map_cache_entries);
   absl::StatusOr<std::vector<std::string>> warnings = impl->maps->Load();
   if (!warnings.ok()) return warnings.status();
   for (const std::string& w : *warnings) spdlog::warn("{}", w);

@@ -26,9 +26,14 @@ CREATE TABLE IF NOT EXISTS jobs (
   created_us INTEGER NOT NULL,
   finished_us INTEGER
 );
+CREATE INDEX IF NOT EXISTS maps_created ON maps(created_us, id);
 CREATE INDEX IF NOT EXISTS jobs_finished ON jobs(finished_us);
 CREATE INDEX IF NOT EXISTS jobs_created ON jobs(created_us, id);
 )sql";
+
+// A map without its source; maps keep their MapInfo in a column (NULL: stored before there was
+// one).
+constexpr const char* kMapInfoColumns = "id, name, format, content_hash, created_us, info";
 
 // Jobs also keep their client_request_id in a column (NULL: recorded before there was one).
 constexpr const char* kJobColumns = "id, state, record, created_us, finished_us, client_request_id";
@@ -75,8 +80,25 @@ class Statement {
 int64_t ToMicros(absl::Time t) { return absl::ToUnixMicros(t); }
 absl::Time FromMicros(int64_t us) { return absl::FromUnixMicros(us); }
 
+// A row of "id, name, format, content_hash, source, created_us, info".
 StoredMap ReadMap(const Statement& s) {
-  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), s.Text(4), FromMicros(s.Int(5))};
+  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), s.Text(4), FromMicros(s.Int(5)),
+                   s.Text(6)};
+}
+
+// A row of kMapInfoColumns.
+StoredMap ReadMapInfo(const Statement& s) {
+  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), "", FromMicros(s.Int(4)), s.Text(5)};
+}
+
+// Every row `s` yields, read by `read`.
+template <typename T>
+absl::StatusOr<std::vector<T>> ReadAll(Statement& s, T (*read)(const Statement&)) {
+  std::vector<T> rows;
+  int rc;
+  while ((rc = s.Step()) == SQLITE_ROW) rows.push_back(read(s));
+  if (rc != SQLITE_DONE) return s.Error("step");
+  return rows;
 }
 
 // A row of kJobColumns.
@@ -92,14 +114,7 @@ StoredJob ReadJob(const Statement& s) {
   return job;
 }
 
-// Every row `s` yields.
-absl::StatusOr<std::vector<StoredJob>> ReadJobs(Statement& s) {
-  std::vector<StoredJob> jobs;
-  int rc;
-  while ((rc = s.Step()) == SQLITE_ROW) jobs.push_back(ReadJob(s));
-  if (rc != SQLITE_DONE) return s.Error("step");
-  return jobs;
-}
+absl::StatusOr<std::vector<StoredJob>> ReadJobs(Statement& s) { return ReadAll(s, ReadJob); }
 
 }  // namespace
 
@@ -145,24 +160,30 @@ absl::Status SqliteStore::Exec(const char* sql) {
   return absl::OkStatus();
 }
 
-absl::Status SqliteStore::Migrate() {
-  Statement columns(db_,
-                    "SELECT 1 FROM pragma_table_info('jobs') WHERE name = 'client_request_id'");
+absl::Status SqliteStore::AddColumn(const char* table, const char* column, const char* type) {
+  Statement columns(db_, absl::StrCat("SELECT 1 FROM pragma_table_info('", table,
+                                      "') WHERE name = '", column, "'")
+                             .c_str());
   if (absl::Status st = columns.status(); !st.ok()) return st;
   const int rc = columns.Step();
-  if (rc == SQLITE_ROW)
-    return Exec("CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);");
+  if (rc == SQLITE_ROW) return absl::OkStatus();
   if (rc != SQLITE_DONE) return columns.Error("step");
+  return Exec(absl::StrCat("ALTER TABLE ", table, " ADD COLUMN ", column, " ", type, ";").c_str());
+}
+
+absl::Status SqliteStore::Migrate() {
+  if (absl::Status s = AddColumn("jobs", "client_request_id", "TEXT"); !s.ok()) return s;
+  if (absl::Status s = AddColumn("maps", "info", "BLOB"); !s.ok()) return s;
   return Exec(
-      "ALTER TABLE jobs ADD COLUMN client_request_id TEXT;"
-      "CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);");
+      "CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);"
+      "CREATE INDEX IF NOT EXISTS maps_name_hash ON maps(name, content_hash);");
 }
 
 absl::Status SqliteStore::PutMap(const StoredMap& map) {
   absl::MutexLock lock(&mu_);
   Statement s(db_,
-              "INSERT OR REPLACE INTO maps(id, name, format, content_hash, source, created_us) "
-              "VALUES (?, ?, ?, ?, ?, ?)");
+              "INSERT OR REPLACE INTO maps(id, name, format, content_hash, source, created_us, "
+              "info) VALUES (?, ?, ?, ?, ?, ?, ?)");
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, map.id);
   s.BindText(2, map.name);
@@ -170,13 +191,19 @@ absl::Status SqliteStore::PutMap(const StoredMap& map) {
   s.BindText(4, map.content_hash);
   s.Bind(5, map.source);
   s.Bind(6, ToMicros(map.created_at));
+  if (map.info.empty()) {
+    s.BindNull(7);
+  } else {
+    s.Bind(7, map.info);
+  }
   return s.Done();
 }
 
 absl::StatusOr<StoredMap> SqliteStore::GetMap(const std::string& id) {
   absl::MutexLock lock(&mu_);
   Statement s(db_,
-              "SELECT id, name, format, content_hash, source, created_us FROM maps WHERE id = ?");
+              "SELECT id, name, format, content_hash, source, created_us, info FROM maps "
+              "WHERE id = ?");
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, id);
   const int rc = s.Step();
@@ -185,17 +212,56 @@ absl::StatusOr<StoredMap> SqliteStore::GetMap(const std::string& id) {
   return s.Error("step");
 }
 
-absl::StatusOr<std::vector<StoredMap>> SqliteStore::LoadMaps() {
+absl::StatusOr<StoredMap> SqliteStore::GetMapInfo(const std::string& id) {
   absl::MutexLock lock(&mu_);
-  Statement s(db_,
-              "SELECT id, name, format, content_hash, source, created_us FROM maps "
-              "ORDER BY created_us, id");
+  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns, " FROM maps WHERE id = ?").c_str());
   if (absl::Status st = s.status(); !st.ok()) return st;
-  std::vector<StoredMap> maps;
-  int rc;
-  while ((rc = s.Step()) == SQLITE_ROW) maps.push_back(ReadMap(s));
-  if (rc != SQLITE_DONE) return s.Error("step");
-  return maps;
+  s.BindText(1, id);
+  const int rc = s.Step();
+  if (rc == SQLITE_ROW) return ReadMapInfo(s);
+  if (rc == SQLITE_DONE) return absl::NotFoundError(absl::StrCat("map '", id, "' not found"));
+  return s.Error("step");
+}
+
+absl::StatusOr<std::vector<StoredMap>> SqliteStore::ListMaps(const MapCursor* after, int limit) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns, " FROM maps",
+                                after != nullptr ? " WHERE (created_us, id) > (?, ?)" : "",
+                                " ORDER BY created_us, id LIMIT ?")
+                       .c_str());
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  int i = 1;
+  if (after != nullptr) {
+    s.Bind(i++, after->created_us);
+    s.BindText(i++, after->id);
+  }
+  s.Bind(i, static_cast<int64_t>(limit));
+  return ReadAll(s, ReadMapInfo);
+}
+
+absl::StatusOr<StoredMap> SqliteStore::FindMap(const std::string& name,
+                                               const std::string& content_hash) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns,
+                                " FROM maps WHERE name = ? AND content_hash = ? "
+                                "ORDER BY created_us, id LIMIT 1")
+                       .c_str());
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, name);
+  s.BindText(2, content_hash);
+  const int rc = s.Step();
+  if (rc == SQLITE_ROW) return ReadMapInfo(s);
+  if (rc == SQLITE_DONE)
+    return absl::NotFoundError(absl::StrCat("no map '", name, "' with that content"));
+  return s.Error("step");
+}
+
+absl::StatusOr<int64_t> SqliteStore::CountMaps() {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, "SELECT COUNT(*) FROM maps");
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  if (s.Step() != SQLITE_ROW) return s.Error("step");
+  return s.Int(0);
 }
 
 absl::Status SqliteStore::DeleteMap(const std::string& id) {

@@ -20,7 +20,11 @@ class SqliteStore final : public Store {
 
   absl::Status PutMap(const StoredMap& map) override;
   absl::StatusOr<StoredMap> GetMap(const std::string& id) override;
-  absl::StatusOr<std::vector<StoredMap>> LoadMaps() override;
+  absl::StatusOr<StoredMap> GetMapInfo(const std::string& id) override;
+  absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) override;
+  absl::StatusOr<StoredMap> FindMap(const std::string& name,
+                                    const std::string& content_hash) override;
+  absl::StatusOr<int64_t> CountMaps() override;
   absl::Status DeleteMap(const std::string& id) override;
   absl::Status PutJob(const StoredJob& job) override;
   absl::StatusOr<StoredJob> GetJob(const std::string& id) override;
@@ -38,6 +42,9 @@ class SqliteStore final : public Store {
   absl::Status Exec(const char* sql) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Adds columns and indexes a database made by an earlier version lacks.
   absl::Status Migrate() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // Adds `column` (with `type`) to `table` unless it has it.
+  absl::Status AddColumn(const char* table, const char* column, const char* type)
+      ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Runs `select` (ids of jobs to delete, bound by `bind`) and deletes those jobs.
   absl::StatusOr<std::vector<std::string>> DeleteSelected(const char* select, int64_t value)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);

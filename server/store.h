@@ -10,14 +10,23 @@
 namespace swarmplan::server {
 
 // A map as uploaded: the serialized swarmplan.v1.MapSource (format + file bytes, or structured
-// data), so the server re-parses it at start.
+// data), which a server parses when it first plans on the map, and its description.
 struct StoredMap {
   std::string id;
   std::string name;
   std::string format;
   std::string content_hash;
-  std::string source;  // serialized swarmplan.v1.MapSource
+  std::string source;  // serialized swarmplan.v1.MapSource; "" from GetMapInfo and ListMaps
   absl::Time created_at;
+  // Serialized swarmplan.v1.MapInfo of the parsed map; "" for a map stored before the store kept
+  // it (MapCatalog::Load fills it in).
+  std::string info;
+};
+
+// Where a map listing continues: after the map created at `created_us` with `id`.
+struct MapCursor {
+  int64_t created_us = 0;
+  std::string id;
 };
 
 // A job record: the serialized swarmplan.v1.Job (request, seed, state, timestamps, result).
@@ -45,11 +54,19 @@ class Store {
  public:
   virtual ~Store() = default;
 
+  // Inserts or replaces the map with this id.
   virtual absl::Status PutMap(const StoredMap& map) = 0;
   // NOT_FOUND when absent.
   virtual absl::StatusOr<StoredMap> GetMap(const std::string& id) = 0;
-  // Every map, oldest first.
-  virtual absl::StatusOr<std::vector<StoredMap>> LoadMaps() = 0;
+  // The map without its source; NOT_FOUND when absent.
+  virtual absl::StatusOr<StoredMap> GetMapInfo(const std::string& id) = 0;
+  // Up to `limit` maps without their sources, oldest first (created_us, then id), after `after`
+  // when given.
+  virtual absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) = 0;
+  // The oldest map with this name and content hash, without its source; NOT_FOUND when none.
+  virtual absl::StatusOr<StoredMap> FindMap(const std::string& name,
+                                            const std::string& content_hash) = 0;
+  virtual absl::StatusOr<int64_t> CountMaps() = 0;
   // NOT_FOUND when absent.
   virtual absl::Status DeleteMap(const std::string& id) = 0;
 

@@ -1,6 +1,7 @@
 // The Store contract, checked against both stores: the embedded SQLite one and the shared Redis
 // one (a real redis-server on a free loopback port; skipped when it is not installed).
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <memory>
 #include <string>
@@ -69,29 +70,63 @@ class StoreTest : public ::testing::TestWithParam<std::string> {
   std::unique_ptr<server::Store> store_;
 };
 
-TEST_P(StoreTest, MapsArePutReadListedOldestFirstAndDeleted) {
+std::vector<std::string> MapIds(const std::vector<StoredMap>& maps) {
+  std::vector<std::string> ids;
+  for (const StoredMap& m : maps) ids.push_back(m.id);
+  return ids;
+}
+
+TEST_P(StoreTest, MapsArePutReadListedOldestFirstFoundByNameAndContentAndDeleted) {
   const std::string source("binary\0source", 13);
-  ASSERT_TRUE(store().PutMap({"map-b", "second", "ascii", "h2", source, kT0}).ok());
-  ASSERT_TRUE(store().PutMap({"map-a", "first", "ascii", "h1", "s1", kT0}).ok());
-  ASSERT_TRUE(store().PutMap({"map-c", "third", "png", "h3", "s3", kT0 - absl::Seconds(1)}).ok());
+  ASSERT_TRUE(store().PutMap({"map-b", "second", "ascii", "h2", source, kT0, "info-b"}).ok());
+  ASSERT_TRUE(store().PutMap({"map-a", "first", "ascii", "h1", "s1", kT0, "info-a"}).ok());
+  ASSERT_TRUE(
+      store().PutMap({"map-c", "third", "png", "h3", "s3", kT0 - absl::Seconds(1), ""}).ok());
+  ASSERT_TRUE(
+      store().PutMap({"map-d", "first", "ascii", "h1", "s1", kT0 + absl::Seconds(1), "i"}).ok());
 
   absl::StatusOr<StoredMap> b = store().GetMap("map-b");
   ASSERT_TRUE(b.ok()) << b.status();
   EXPECT_EQ(b->name, "second");
   EXPECT_EQ(b->source, source);
   EXPECT_EQ(b->created_at, kT0);
+  EXPECT_EQ(b->info, "info-b");
+  absl::StatusOr<StoredMap> b_info = store().GetMapInfo("map-b");
+  ASSERT_TRUE(b_info.ok()) << b_info.status();
+  EXPECT_EQ(b_info->content_hash, "h2");
+  EXPECT_EQ(b_info->info, "info-b");
+  EXPECT_TRUE(b_info->source.empty());
+  EXPECT_TRUE(store().GetMapInfo("map-c")->info.empty());
 
-  absl::StatusOr<std::vector<StoredMap>> all = store().LoadMaps();
-  ASSERT_TRUE(all.ok()) << all.status();
-  ASSERT_EQ(all->size(), 3u);
-  EXPECT_EQ((*all)[0].id, "map-c");  // oldest first, then by id
-  EXPECT_EQ((*all)[1].id, "map-a");
-  EXPECT_EQ((*all)[2].id, "map-b");
+  // Oldest first, then by id; pages continue after a cursor.
+  EXPECT_EQ(MapIds(*store().ListMaps(nullptr, 10)),
+            (std::vector<std::string>{"map-c", "map-a", "map-b", "map-d"}));
+  const server::MapCursor after_a{absl::ToUnixMicros(kT0), "map-a"};
+  EXPECT_EQ(MapIds(*store().ListMaps(&after_a, 1)), std::vector<std::string>{"map-b"});
+  EXPECT_TRUE(store().ListMaps(nullptr, 10)->front().source.empty());
+  EXPECT_EQ(*store().CountMaps(), 4);
+
+  // The oldest map of that name and content.
+  absl::StatusOr<StoredMap> found = store().FindMap("first", "h1");
+  ASSERT_TRUE(found.ok()) << found.status();
+  EXPECT_EQ(found->id, "map-a");
+  EXPECT_TRUE(absl::IsNotFound(store().FindMap("first", "h2").status()));
+  EXPECT_TRUE(absl::IsNotFound(store().FindMap("second", "h1").status()));
+
+  // Put again: the map is replaced, and found under its new name only.
+  ASSERT_TRUE(store().PutMap({"map-a", "renamed", "ascii", "h1", "s1", kT0, "info-a"}).ok());
+  EXPECT_EQ(store().FindMap("first", "h1")->id, "map-d");
+  EXPECT_EQ(store().FindMap("renamed", "h1")->id, "map-a");
+  EXPECT_EQ(*store().CountMaps(), 4);
 
   EXPECT_TRUE(store().DeleteMap("map-a").ok());
   EXPECT_TRUE(absl::IsNotFound(store().DeleteMap("map-a")));
   EXPECT_TRUE(absl::IsNotFound(store().GetMap("map-a").status()));
-  EXPECT_EQ(store().LoadMaps()->size(), 2u);
+  EXPECT_TRUE(absl::IsNotFound(store().GetMapInfo("map-a").status()));
+  EXPECT_TRUE(absl::IsNotFound(store().FindMap("renamed", "h1").status()));
+  EXPECT_EQ(MapIds(*store().ListMaps(nullptr, 10)),
+            (std::vector<std::string>{"map-c", "map-b", "map-d"}));
+  EXPECT_EQ(*store().CountMaps(), 3);
 }
 
 TEST_P(StoreTest, AJobPutAgainReplacesItsRecordAndMovesBetweenStates) {
@@ -185,7 +220,7 @@ TEST_P(StoreTest, FinishedJobsAreDeletedByAgeAndOldestFirst) {
 }
 
 TEST_P(StoreTest, EverythingWrittenIsThereAfterTheStoreIsOpenedAgain) {
-  ASSERT_TRUE(store().PutMap({"map-a", "a", "ascii", "h", "s", kT0}).ok());
+  ASSERT_TRUE(store().PutMap({"map-a", "a", "ascii", "h", "s", kT0, "i"}).ok());
   ASSERT_TRUE(store().PutJob(Job("job-1", 3, kT0, "order-1", kT0 + absl::Seconds(1))).ok());
   if (redis_ != nullptr) {
     // A crash of Redis itself: with appendfsync always every acknowledged write is in the AOF.
@@ -252,7 +287,7 @@ TEST(StoreUrlTest, ARedisWithAPasswordTakesItFromTheFileOnly) {
   config.store_password_file = right;
   store = server::OpenStore(config);
   ASSERT_TRUE(store.ok()) << store.status();
-  EXPECT_TRUE((*store)->PutMap({"map-a", "a", "ascii", "h", "s", kT0}).ok());
+  EXPECT_TRUE((*store)->PutMap({"map-a", "a", "ascii", "h", "s", kT0, "i"}).ok());
   EXPECT_EQ(server::DescribeStore(config).find("s3cret"), std::string::npos);
 }
 
@@ -287,6 +322,87 @@ TEST(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis) 
   EXPECT_EQ(again.state(), v1::JOB_STATE_SUCCEEDED);
   EXPECT_TRUE(
       google::protobuf::util::MessageDifferencer::Equals(again.result(), finished.result()));
+}
+
+TEST(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDeletedForBoth) {
+  TempDir dir_a, dir_b;
+  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_a.path());
+  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+  ASSERT_TRUE(redis.ok()) << redis.status();
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.store = (*redis)->url();
+  TestServer a(dir_a.path(), config);
+  TestServer b(dir_b.path(), config);
+
+  const std::string map_id = a.UploadGrid("shared", 12, 6, 5);
+  const v1::Job job = b.SubmitOk(TestServer::Request(map_id, "astar", 11.5));
+  const v1::Job finished = b.WaitUntilFinal(job.id());
+  EXPECT_EQ(finished.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_GT(finished.result().raw_path_size(), 2);  // around the wall
+  EXPECT_EQ(a.GetJob(job.id()).state(), v1::JOB_STATE_SUCCEEDED);
+
+  {
+    v1::DeleteMapRequest request;
+    request.set_id(map_id);
+    v1::DeleteMapResponse response;
+    grpc::ClientContext context;
+    ASSERT_TRUE(a.maps().DeleteMap(&context, request, &response).ok());
+  }
+  v1::GetMapRequest get;
+  get.set_id(map_id);
+  v1::GetMapResponse got;
+  grpc::ClientContext context;
+  EXPECT_EQ(b.maps().GetMap(&context, get, &got).error_code(), grpc::StatusCode::NOT_FOUND);
+  v1::SubmitPlanResponse refused;
+  grpc::ClientContext submit_context;
+  EXPECT_EQ(b.jobs()
+                .SubmitPlan(&submit_context, TestServer::Request(map_id, "astar", 11.5), &refused)
+                .error_code(),
+            grpc::StatusCode::NOT_FOUND);
+}
+
+TEST(SqliteStoreTest, MapsStoredWithoutADescriptionAreDescribedAtStartAndPlannedOn) {
+  TempDir dir;
+  v1::MapSource source;
+  v1::OccupancyGridData* grid = source.mutable_structured()->mutable_occupancy_grid();
+  grid->set_width(12);
+  grid->set_height(6);
+  grid->set_resolution(1.0);
+  grid->set_cells(std::string(72, '\0'));
+  {
+    // The maps table of the previous version: no info column.
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((dir.path() + "/swarmplan.db").c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db,
+                           "CREATE TABLE maps (id TEXT PRIMARY KEY, name TEXT NOT NULL, format "
+                           "TEXT NOT NULL, content_hash TEXT NOT NULL, source BLOB NOT NULL, "
+                           "created_us INTEGER NOT NULL);",
+                           nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_stmt* insert = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(db,
+                                 "INSERT INTO maps VALUES ('map-old', 'old', 'structured', "
+                                 "'hash', ?, 1800000000000000)",
+                                 -1, &insert, nullptr),
+              SQLITE_OK);
+    const std::string bytes = source.SerializeAsString();
+    sqlite3_bind_blob(insert, 1, bytes.data(), static_cast<int>(bytes.size()), SQLITE_TRANSIENT);
+    ASSERT_EQ(sqlite3_step(insert), SQLITE_DONE);
+    sqlite3_finalize(insert);
+    sqlite3_close(db);
+  }
+  TestServer server(dir.path());
+  v1::ListMapsRequest list;
+  v1::ListMapsResponse maps;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server.maps().ListMaps(&context, list, &maps).ok());
+  ASSERT_EQ(maps.maps_size(), 1);
+  EXPECT_EQ(maps.maps(0).id(), "map-old");
+  EXPECT_EQ(maps.maps(0).kind(), v1::MAP_KIND_OCCUPANCY_GRID);
+  EXPECT_EQ(maps.maps(0).width(), 12);
+  EXPECT_EQ(maps.maps(0).height(), 6);
+  const v1::Job job = server.SubmitOk(TestServer::Request("map-old", "astar", 11.5));
+  EXPECT_EQ(server.WaitUntilFinal(job.id()).state(), v1::JOB_STATE_SUCCEEDED);
 }
 
 }  // namespace
