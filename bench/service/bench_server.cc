@@ -13,7 +13,8 @@
 
 namespace swarmplan::bench {
 
-absl::StatusOr<std::unique_ptr<BenchServer>> BenchServer::Start(int workers, int queue_capacity) {
+absl::StatusOr<std::unique_ptr<BenchServer>> BenchServer::Start(int workers, int queue_capacity,
+                                                                const std::string& store) {
   std::unique_ptr<BenchServer> bench(new BenchServer());
   std::string pattern =
       (std::filesystem::temp_directory_path() / "swarmplan-service-bench-XXXXXX").string();
@@ -25,6 +26,7 @@ absl::StatusOr<std::unique_ptr<BenchServer>> BenchServer::Start(int workers, int
   server::ServerConfig config;
   config.listen = "127.0.0.1:0";
   config.data_dir = bench->data_dir_;
+  config.store = store;
   config.metrics_port = 0;
   config.workers = workers;
   config.queue_capacity = queue_capacity;
@@ -84,6 +86,25 @@ absl::StatusOr<v1::Job> BenchServer::Submit(const v1::PlanRequest& request) {
     return FromGrpc("SubmitPlan", status);
   }
   return response.job();
+}
+
+absl::StatusOr<v1::PlanResult> BenchServer::Plan(const v1::PlanRequest& request,
+                                                 absl::Duration give_up) {
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() + absl::ToChronoSeconds(give_up));
+  std::unique_ptr<grpc::ClientReader<v1::JobEvent>> reader = jobs_->Plan(&context, request);
+  v1::JobEvent event;
+  v1::PlanResult result;
+  bool finished = false;
+  while (reader->Read(&event)) {
+    if (event.has_finished()) {
+      result = event.finished().result();
+      finished = true;
+    }
+  }
+  if (grpc::Status status = reader->Finish(); !status.ok()) return FromGrpc("Plan", status);
+  if (!finished) return absl::InternalError("Plan stream ended without a finished event");
+  return result;
 }
 
 absl::StatusOr<v1::Job> BenchServer::GetJob(const std::string& id) {

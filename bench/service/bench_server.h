@@ -14,10 +14,12 @@
 namespace swarmplan::bench {
 
 // A swarmplan server running in-process on 127.0.0.1 (a port gRPC picks) with its data in a
-// fresh temporary directory, removed at destruction, and a client channel to it.
+// fresh temporary directory, removed at destruction (or in the store `store` names, when given),
+// and a client channel to it.
 class BenchServer {
  public:
-  static absl::StatusOr<std::unique_ptr<BenchServer>> Start(int workers, int queue_capacity);
+  static absl::StatusOr<std::unique_ptr<BenchServer>> Start(int workers, int queue_capacity,
+                                                            const std::string& store = "");
   ~BenchServer();
 
   v1::JobService::Stub& jobs() { return *jobs_; }
@@ -26,6 +28,8 @@ class BenchServer {
   absl::StatusOr<std::string> UploadMapFile(const std::string& path);
 
   absl::StatusOr<v1::Job> Submit(const v1::PlanRequest& request);
+  // A Plan stream read to its end; the finished event's result.
+  absl::StatusOr<v1::PlanResult> Plan(const v1::PlanRequest& request, absl::Duration give_up);
   absl::StatusOr<v1::Job> GetJob(const std::string& id);
   // Polls GetJob every `poll` until the job is final; DEADLINE_EXCEEDED after `give_up`.
   absl::StatusOr<v1::Job> WaitUntilFinal(const std::string& id, absl::Duration poll,

@@ -29,6 +29,8 @@ struct Options {
   int seed = 7;
   std::string samples = SWARMPLAN_SOURCE_DIR "/samples/maps";
   std::string markdown;
+  std::string store;  // a second store to compare with SQLite
+  bool store_only = false;
 };
 
 PlanCase Bso(const Options& options, int iterations) {
@@ -52,7 +54,20 @@ PlanCase AStar(const Options& options) {
   return plan;
 }
 
+absl::Status MeasureStores(const Options& options, ServiceBenchReport& report) {
+  for (const PlanCase& plan : {AStar(options), Bso(options, options.iterations)}) {
+    std::cerr << "stores: " << plan.algorithm << "...\n";
+    absl::StatusOr<StoreLatencyResult> r =
+        MeasureStoreLatency(plan, options.store, options.repetitions, options.jobs);
+    if (!r.ok()) return r.status();
+    if (plan.algorithm == "bso") r->label += absl::StrCat(" (", options.iterations, " iterations)");
+    report.stores.push_back(*r);
+  }
+  return absl::OkStatus();
+}
+
 absl::Status Measure(const Options& options, ServiceBenchReport& report) {
+  if (options.store_only) return MeasureStores(options, report);
   for (const PlanCase& plan : {AStar(options), Bso(options, options.iterations)}) {
     std::cerr << "overhead: " << plan.algorithm << "...\n";
     absl::StatusOr<OverheadResult> r = MeasureOverhead(plan, options.repetitions);
@@ -84,7 +99,7 @@ absl::Status Measure(const Options& options, ServiceBenchReport& report) {
       (watched ? report.watched : report.unwatched).push_back(*r);
     }
   }
-  return absl::OkStatus();
+  return options.store.empty() ? absl::OkStatus() : MeasureStores(options, report);
 }
 
 int Main(int argc, char** argv) {
@@ -113,11 +128,18 @@ int Main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of every plan")->check(CLI::Range(1, 1 << 30));
   app.add_option("--samples", options.samples, "folder holding warehouse.ascii and circles.json");
   app.add_option("--markdown", options.markdown, "also write the report to this file");
+  app.add_option("--store", options.store,
+                 "also compare the embedded SQLite store with this one (redis://HOST:PORT)");
+  app.add_flag("--store-only", options.store_only, "measure the stores only (needs --store)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : kExitBadUsage;
+  }
+  if (options.store_only && options.store.empty()) {
+    std::cerr << "swarmplan-service-bench: --store-only needs --store URL\n";
+    return kExitBadUsage;
   }
   spdlog::set_level(spdlog::level::warn);  // the servers' job logs would bury the report
 

@@ -49,4 +49,21 @@ struct WatcherResult {
 };
 absl::StatusOr<WatcherResult> MeasureWatcher(const PlanCase& plan, bool slow_watcher);
 
+// 4. The same plan through two 1-worker servers, one on the embedded SQLite store and one on
+// `store` (for example redis://127.0.0.1:6379), interleaved: a Plan stream read to its end,
+// `repetitions` times, and `batch_jobs` copies submitted at once until all are final, 3 times.
+struct StoreLatencyResult {
+  std::string store;
+  std::string label;
+  int repetitions = 0;
+  int batch_jobs = 0;
+  double sqlite_plan_seconds = 0;  // medians of client-side wall time
+  double store_plan_seconds = 0;
+  double sqlite_batch_seconds = 0;
+  double store_batch_seconds = 0;
+};
+absl::StatusOr<StoreLatencyResult> MeasureStoreLatency(const PlanCase& plan,
+                                                       const std::string& store, int repetitions,
+                                                       int batch_jobs);
+
 }  // namespace swarmplan::bench

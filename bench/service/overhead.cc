@@ -19,24 +19,6 @@ absl::StatusOr<PlanResult> RunInProcess(const PlanRequest& request) {
   return RunPlan(DefaultRegistry(), request, stop, observer);
 }
 
-absl::StatusOr<v1::PlanResult> RunPlanStream(BenchServer& server, const v1::PlanRequest& request) {
-  grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() + absl::ToChronoSeconds(kJobGiveUp));
-  std::unique_ptr<grpc::ClientReader<v1::JobEvent>> reader = server.jobs().Plan(&context, request);
-  v1::JobEvent event;
-  v1::PlanResult result;
-  bool finished = false;
-  while (reader->Read(&event)) {
-    if (event.has_finished()) {
-      result = event.finished().result();
-      finished = true;
-    }
-  }
-  if (grpc::Status status = reader->Finish(); !status.ok()) return FromGrpc("Plan", status);
-  if (!finished) return absl::InternalError("Plan stream ended without a finished event");
-  return result;
-}
-
 absl::StatusOr<v1::PlanResult> RunSubmitGet(BenchServer& server, const v1::PlanRequest& request) {
   absl::StatusOr<v1::Job> job = server.Submit(request);
   if (!job.ok()) return job.status();
@@ -79,7 +61,7 @@ absl::StatusOr<OverheadResult> MeasureOverhead(const PlanCase& plan, int repetit
   if (!reference.ok()) return reference.status();
 
   std::vector<double> in_process, stream, submit_get, warm_up;
-  auto plan_stream = [&] { return RunPlanStream(**server, request); };
+  auto plan_stream = [&] { return (*server)->Plan(request, kJobGiveUp); };
   auto submit_then_get = [&] { return RunSubmitGet(**server, request); };
   // One untimed call of each path first: connection set-up and first-use costs.
   if (absl::Status s = TimeServed(plan_stream, *reference, "Plan", warm_up, out); !s.ok()) {

@@ -19,6 +19,7 @@ struct ServiceBenchReport {
   std::string watcher_plan;
   std::vector<WatcherResult> unwatched;  // one per run
   std::vector<WatcherResult> watched;
+  std::vector<StoreLatencyResult> stores;  // with --store only
 };
 
 std::string ServiceReportMarkdown(const ServiceBenchReport& report);
