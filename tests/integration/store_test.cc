@@ -361,6 +361,50 @@ TEST(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDele
             grpc::StatusCode::NOT_FOUND);
 }
 
+TEST(RedisStoreServerTest, WhileRedisIsDownCallsAnswerUnavailableAndTheServerRecoversAfter) {
+  TempDir dir;
+  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir.path());
+  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+  ASSERT_TRUE(redis.ok()) << redis.status();
+  server::ServerConfig config = TestServer::DefaultConfig();
+  config.store = (*redis)->url();
+  TestServer server(dir.path(), config);
+  const std::string kept = server.UploadGrid("kept", 12, 6, 5);
+
+  (*redis)->Kill();
+  v1::UploadMapRequest upload;
+  upload.set_name("during-outage");
+  upload.mutable_source()->mutable_files()->set_format("ascii");
+  v1::MapFile* file = upload.mutable_source()->mutable_files()->add_files();
+  file->set_name("m.txt");
+  file->set_content("....\n.#..\n");
+  {
+    v1::UploadMapResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = server.maps().UploadMap(&context, upload, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::UNAVAILABLE) << status.error_message();
+    EXPECT_NE(status.error_message().find("redis"), std::string::npos) << status.error_message();
+  }
+  {
+    v1::SubmitPlanResponse response;
+    grpc::ClientContext context;
+    EXPECT_EQ(server.jobs()
+                  .SubmitPlan(&context, TestServer::Request(kept, "astar", 11.5), &response)
+                  .error_code(),
+              grpc::StatusCode::UNAVAILABLE);
+  }
+
+  ASSERT_TRUE((*redis)->Restart().ok());
+  {
+    v1::UploadMapResponse response;
+    grpc::ClientContext context;
+    const grpc::Status status = server.maps().UploadMap(&context, upload, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+  }
+  const v1::Job job = server.SubmitOk(TestServer::Request(kept, "astar", 11.5));
+  EXPECT_EQ(server.WaitUntilFinal(job.id()).state(), v1::JOB_STATE_SUCCEEDED);
+}
+
 TEST(SqliteStoreTest, MapsStoredWithoutADescriptionAreDescribedAtStartAndPlannedOn) {
   TempDir dir;
   v1::MapSource source;
