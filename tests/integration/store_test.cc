@@ -291,27 +291,36 @@ TEST(StoreUrlTest, ARedisWithAPasswordTakesItFromTheFileOnly) {
   EXPECT_EQ(server::DescribeStore(config).find("s3cret"), std::string::npos);
 }
 
-TEST(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis) {
-  TempDir dir;
-  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir.path());
-  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-  ASSERT_TRUE(redis.ok()) << redis.status();
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.store = (*redis)->url();
+// Servers on a real redis-server whose AOF is in dir_; config_ points at it.
+class RedisStoreServerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_.path());
+    if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
+    ASSERT_TRUE(redis.ok()) << redis.status();
+    redis_ = std::move(*redis);
+    config_.store = redis_->url();
+  }
 
+  TempDir dir_;
+  std::unique_ptr<RedisTestServer> redis_;
+  server::ServerConfig config_ = TestServer::DefaultConfig();
+};
+
+TEST_F(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis) {
   std::string map_id;
   v1::Job finished;
   {
-    TestServer server(dir.path(), config);
+    TestServer server(dir_.path(), config_);
     map_id = server.UploadGrid("kept", 12, 6, 5);
     const v1::Job job = server.SubmitOk(TestServer::Request(map_id, "astar", 11.5));
     finished = server.WaitUntilFinal(job.id());
     ASSERT_EQ(finished.state(), v1::JOB_STATE_SUCCEEDED);
   }
-  (*redis)->Kill();
-  ASSERT_TRUE((*redis)->Restart().ok());
+  redis_->Kill();
+  ASSERT_TRUE(redis_->Restart().ok());
 
-  TestServer server(dir.path(), config);
+  TestServer server(dir_.path(), config_);
   v1::GetMapRequest get;
   get.set_id(map_id);
   v1::GetMapResponse map;
@@ -324,15 +333,10 @@ TEST(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis) 
       google::protobuf::util::MessageDifferencer::Equals(again.result(), finished.result()));
 }
 
-TEST(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDeletedForBoth) {
-  TempDir dir_a, dir_b;
-  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_a.path());
-  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-  ASSERT_TRUE(redis.ok()) << redis.status();
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.store = (*redis)->url();
-  TestServer a(dir_a.path(), config);
-  TestServer b(dir_b.path(), config);
+TEST_F(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDeletedForBoth) {
+  TempDir dir_b;
+  TestServer a(dir_.path(), config_);
+  TestServer b(dir_b.path(), config_);
 
   const std::string map_id = a.UploadGrid("shared", 12, 6, 5);
   const v1::Job job = b.SubmitOk(TestServer::Request(map_id, "astar", 11.5));
@@ -361,17 +365,11 @@ TEST(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDele
             grpc::StatusCode::NOT_FOUND);
 }
 
-TEST(RedisStoreServerTest, WhileRedisIsDownCallsAnswerUnavailableAndTheServerRecoversAfter) {
-  TempDir dir;
-  absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir.path());
-  if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-  ASSERT_TRUE(redis.ok()) << redis.status();
-  server::ServerConfig config = TestServer::DefaultConfig();
-  config.store = (*redis)->url();
-  TestServer server(dir.path(), config);
+TEST_F(RedisStoreServerTest, WhileRedisIsDownCallsAnswerUnavailableAndTheServerRecoversAfter) {
+  TestServer server(dir_.path(), config_);
   const std::string kept = server.UploadGrid("kept", 12, 6, 5);
 
-  (*redis)->Kill();
+  redis_->Kill();
   v1::UploadMapRequest upload;
   upload.set_name("during-outage");
   upload.mutable_source()->mutable_files()->set_format("ascii");
@@ -394,7 +392,7 @@ TEST(RedisStoreServerTest, WhileRedisIsDownCallsAnswerUnavailableAndTheServerRec
               grpc::StatusCode::UNAVAILABLE);
   }
 
-  ASSERT_TRUE((*redis)->Restart().ok());
+  ASSERT_TRUE(redis_->Restart().ok());
   {
     v1::UploadMapResponse response;
     grpc::ClientContext context;
