@@ -67,7 +67,7 @@ grpc::Status RawBidiOnce(grpc::Channel& channel, const std::string& method,
 
 TEST(OperationsTest, MetricsAreServedOverHttpWithConventionalNames) {
   TempDir dir;
-  TestServer server(dir.path());
+  TestServer server(dir.path(), TestServer::WithMetrics());
   const std::string map_id = server.UploadGrid("grid", 6, 4);
   server.WaitUntilFinal(server.SubmitOk(TestServer::SlowRequest(map_id, 3, 0)).id());
   v1::GetJobRequest missing;
@@ -114,7 +114,7 @@ double MetricValue(const std::string& body, const std::string& name) {
 
 TEST(OperationsTest, WorkersBusyReturnsToZeroAfterJobsFinish) {
   TempDir dir;
-  TestServer server(dir.path());
+  TestServer server(dir.path(), TestServer::WithMetrics());
   const std::string map_id = server.UploadGrid("grid", 6, 4);
   const std::string running = server.SubmitOk(TestServer::SlowRequest(map_id, 100, 10)).id();
   server.WaitForState(running, v1::JOB_STATE_RUNNING);

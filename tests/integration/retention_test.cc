@@ -89,7 +89,7 @@ TEST(RetentionTest, MaxRetainedJobsKeepsTheNewestFinishedJobsAlsoAfterARestart) 
 
 TEST(RetentionTest, TheCacheIsBoundedAndResultsComeBackIdenticallyFromTheStore) {
   TempDir dir;
-  server::ServerConfig config = TestServer::DefaultConfig();
+  server::ServerConfig config = TestServer::WithMetrics();
   config.job_cache_entries = 2;
   std::vector<v1::Job> jobs;
   {

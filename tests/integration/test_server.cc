@@ -128,6 +128,12 @@ server::ServerConfig TestServer::DefaultConfig() {
   config.queue_capacity = 4;
   config.shutdown_grace = absl::Seconds(5);
   config.log_level = "warn";
+  config.metrics_port = 0;
+  return config;
+}
+
+server::ServerConfig TestServer::WithMetrics(server::ServerConfig config) {
+  config.metrics_port = -1;
   return config;
 }
 
@@ -135,7 +141,7 @@ TestServer::TestServer(const std::string& data_dir, server::ServerConfig config)
   config.listen = "127.0.0.1:0";
   config.data_dir = data_dir;
   if (TestingWithRedis()) config.store = StoreUrlFor(data_dir);
-  config.metrics_port = -1;
+  if (config.metrics_port != 0) config.metrics_port = -1;
   config.metrics_address = "127.0.0.1";
   absl::StatusOr<std::unique_ptr<server::Server>> server =
       server::Server::Start(config, TestRegistry());

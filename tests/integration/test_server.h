@@ -41,11 +41,14 @@ class TempDir {
 // A server running in-process on 127.0.0.1 (a port gRPC picks) with stubs of every service.
 class TestServer {
  public:
-  // `config` overrides: listen, data_dir, store and metrics_port are set here.
+  // `config` overrides: listen, data_dir and store are set here; a metrics endpoint, when
+  // `config.metrics_port` is not 0, listens on a port the system picks.
   explicit TestServer(const std::string& data_dir, server::ServerConfig config = DefaultConfig());
   ~TestServer();
 
+  // Without a metrics endpoint: its HTTP server takes up to 2 s to stop.
   static server::ServerConfig DefaultConfig();
+  static server::ServerConfig WithMetrics(server::ServerConfig config = DefaultConfig());
 
   server::Server& server() { return *server_; }
   int port() const { return server_->port(); }
