@@ -5,6 +5,7 @@
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "server/redis_job_lua.h"
 
 namespace swarmplan::server {
 namespace {
@@ -58,55 +59,21 @@ end
 return out
 )lua";
 
-// Removes a job from every index it is in (its hash says which).
-constexpr const char* kUnindexJob = R"lua(
-local function unindex(p, id)
-  local key = p .. 'job:' .. id
-  local old = redis.call('HMGET', key, 'state', 'created_us', 'client_request_id')
-  if old[1] then
-    local member = old[2] .. ':' .. id
-    redis.call('ZREM', p .. 'jobs', member)
-    redis.call('ZREM', p .. 'jobs:state:' .. old[1], member)
-    redis.call('ZREM', p .. 'jobs:unfinished', member)
-    if old[3] and old[3] ~= '' then redis.call('ZREM', p .. 'crid:' .. old[3], member) end
-  end
-  redis.call('ZREM', p .. 'jobs:finished', id)
-  redis.call('DEL', key)
-end
-)lua";
-
-// ARGV: prefix, id, state, record, created_us (20 digits), finished_us ('' while unfinished),
-// client_request_id.
+// ARGV: prefix, then the job (JobRecordArgs).
 const std::string& PutJobScript() {
-  static const auto* script = new std::string(absl::StrCat(kUnindexJob, R"lua(
-local p, id, state, created, finished, crid = ARGV[1], ARGV[2], ARGV[3], ARGV[5], ARGV[6], ARGV[7]
-unindex(p, id)
-local key = p .. 'job:' .. id
-local member = created .. ':' .. id
-redis.call('HSET', key, 'state', state, 'record', ARGV[4], 'created_us', created,
-           'client_request_id', crid)
-redis.call('ZADD', p .. 'jobs', 0, member)
-redis.call('ZADD', p .. 'jobs:state:' .. state, 0, member)
-if finished == '' then
-  redis.call('ZADD', p .. 'jobs:unfinished', 0, member)
-else
-  redis.call('HSET', key, 'finished_us', finished)
-  redis.call('ZADD', p .. 'jobs:finished', finished, id)
-end
-if crid ~= '' then redis.call('ZADD', p .. 'crid:' .. crid, 0, member) end
-return 1
-)lua"));
+  static const auto* script =
+      new std::string(absl::StrCat(kJobRecordLua, "put_job(ARGV[1], 2)\nreturn 1\n"));
   return *script;
 }
 
 // ARGV: prefix, ids...; deletes those still finished and returns them.
 const std::string& DeleteFinishedScript() {
-  static const auto* script = new std::string(absl::StrCat(kUnindexJob, R"lua(
+  static const auto* script = new std::string(absl::StrCat(kJobRecordLua, R"lua(
 local p = ARGV[1]
 local deleted = {}
 for i = 2, #ARGV do
   if redis.call('HEXISTS', p .. 'job:' .. ARGV[i], 'finished_us') == 1 then
-    unindex(p, ARGV[i])
+    unindex_job(p, ARGV[i])
     deleted[#deleted + 1] = ARGV[i]
   end
 end
@@ -130,10 +97,8 @@ constexpr size_t kDeleteBatch = 500;
 
 std::string Micros(absl::Time t) { return absl::StrCat(absl::ToUnixMicros(t)); }
 
-// Sorted-set members order lexicographically: a zero-padded time orders them by time, then id.
-std::string Padded(int64_t us) { return absl::StrFormat("%020d", std::max<int64_t>(us, 0)); }
 std::string Member(int64_t created_us, const std::string& id) {
-  return absl::StrCat(Padded(created_us), ":", id);
+  return absl::StrCat(PaddedMicros(created_us), ":", id);
 }
 std::string IdOfMember(const std::string& member) {
   const size_t colon = member.find(':');
@@ -163,7 +128,7 @@ absl::Status RedisStore::PutMap(const StoredMap& map) {
   return client_
       ->Eval(PutMapScript(), {},
              {prefix_, map.id, map.name, map.format, map.content_hash, map.source,
-              Padded(absl::ToUnixMicros(map.created_at)), map.info})
+              PaddedMicros(absl::ToUnixMicros(map.created_at)), map.info})
       .status();
 }
 
@@ -247,13 +212,9 @@ absl::Status RedisStore::DeleteMap(const std::string& id) {
 }
 
 absl::Status RedisStore::PutJob(const StoredJob& job) {
-  return client_
-      ->Eval(PutJobScript(), {},
-             {prefix_, job.id, absl::StrCat(job.state), job.record,
-              Padded(absl::ToUnixMicros(job.created_at)),
-              job.finished_at == absl::InfiniteFuture() ? "" : Micros(job.finished_at),
-              job.client_request_id})
-      .status();
+  std::vector<std::string> args = {prefix_};
+  for (std::string& arg : JobRecordArgs(job)) args.push_back(std::move(arg));
+  return client_->Eval(PutJobScript(), {}, args).status();
 }
 
 absl::StatusOr<std::vector<StoredJob>> RedisStore::GetJobs(const std::vector<std::string>& ids) {
