@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <string_view>
 
@@ -10,6 +11,9 @@
 namespace swarmplan {
 
 enum class StopReason { kNone, kCancelled, kDeadline, kIterationCap };
+
+// How many nodes an exact search expands between two looks at its stop token.
+inline constexpr int64_t kStopCheckInterval = 4096;
 const char* StopReasonName(StopReason reason);
 
 // The rule that ends a planner's search: "cancelled OR past the deadline OR at the iteration

@@ -7,8 +7,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // One-dimensional transform of f (length n) into d: d[q] = min_p (q - p)^2 + f[p], by the lower
 // envelope of parabolas. v and z are scratch buffers of size n and n + 1.
 void Transform1D(const double* f, int n, double* d, int* v, double* z) {

@@ -9,8 +9,7 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kHalfDiagonal = 0.70710678118654757;  // sqrt(2) / 2, rounded up
+constexpr double kHalfCellDiagonal = 0.70710678118654757;  // sqrt(2) / 2, rounded up
 // Cell-boundary tolerance of the exact traversal (in cells): a segment this close to a blocked
 // square counts as touching it, so rounding can only make the check stricter.
 constexpr double kTouchEps = 1e-9;
@@ -96,7 +95,7 @@ double GridCollisionChecker::LocalClearance(const Point2& u) const {
   if (upper > kExactReach) {
     // Every blocked centre is >= centre_distance - offset from u, and a square reaches at
     // most half a diagonal beyond its centre.
-    return std::max(0.0, centre_distance - offset - kHalfDiagonal - 1e-12);
+    return std::max(0.0, centre_distance - offset - kHalfCellDiagonal - 1e-12);
   }
   double best = upper;
   const int x0 = std::max(0, static_cast<int>(std::ceil(u.x() - upper)) - 1);
@@ -175,7 +174,7 @@ double GridCollisionChecker::SquareDistance(const Point2& a, const Point2& b, do
     const double centre = grid_.DistanceToObstacle(cx, cy) * inv_resolution_;
     const double offset = (mid - Point2(cx + 0.5, cy + 0.5)).norm();
     threshold = std::min(threshold, centre + offset);
-    const double lower = centre - offset - kHalfDiagonal - half - 1e-12;
+    const double lower = centre - offset - kHalfCellDiagonal - half - 1e-12;
     if (lower > threshold) continue;
     if (2 * half > kScanPieceLength && top + 2 <= 64) {
       const double t_mid = 0.5 * (piece.t0 + piece.t1);

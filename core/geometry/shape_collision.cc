@@ -9,8 +9,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 Bounds2 PointBox(const Point2& p) { return Bounds2{p, p}; }
 
 Bounds2 SegmentBox(const Point2& a, const Point2& b) {

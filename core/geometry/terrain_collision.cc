@@ -8,8 +8,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // The parameters t in (0, 1) where the line from p0 to p0 + d crosses an integer coordinate.
 void AddCrossings(double p0, double d, std::vector<double>& ts) {
   if (d == 0.0) return;

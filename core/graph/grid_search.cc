@@ -10,7 +10,6 @@ namespace {
 
 constexpr double kSqrt2 = 1.41421356237309504880;
 constexpr double kHalfDiagonal = kSqrt2 / 2;
-constexpr int64_t kStopCheckInterval = 4096;
 
 struct Step {
   int dx;

@@ -77,7 +77,6 @@ absl::StatusOr<Path> SearchVisibilityGraph(const ShapeCollisionChecker& checker,
     return to < 2 || (from == 0 && start_in_slack) || (from == 1 && goal_in_slack) ||
            grown.Tangent(point(from), grown.corners[to - 2]);
   };
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<double> cost(nodes, kInf);
   std::vector<int> parent(nodes, -1);
   std::vector<char> closed(nodes, 0);

@@ -5,19 +5,14 @@
 #include "absl/container/flat_hash_map.h"
 
 namespace swarmplan {
-namespace {
-
-int64_t Key(Cell c) { return (static_cast<int64_t>(c.y) << 32) ^ static_cast<uint32_t>(c.x); }
-
-}  // namespace
 
 void RemoveLoops(std::vector<Cell>& cells) {
   absl::flat_hash_map<int64_t, size_t> last;
   last.reserve(cells.size());
-  for (size_t i = 0; i < cells.size(); ++i) last[Key(cells[i])] = i;
+  for (size_t i = 0; i < cells.size(); ++i) last[CellKey(cells[i])] = i;
   std::vector<Cell> out;
   out.reserve(cells.size());
-  for (size_t i = 0; i < cells.size(); i = last[Key(cells[i])] + 1) out.push_back(cells[i]);
+  for (size_t i = 0; i < cells.size(); i = last[CellKey(cells[i])] + 1) out.push_back(cells[i]);
   cells = std::move(out);
 }
 

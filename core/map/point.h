@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace swarmplan {
@@ -17,5 +19,15 @@ struct Cell {
   int y = 0;
   friend bool operator==(const Cell&, const Cell&) = default;
 };
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A 2D point at height 0.
+inline Point3 Lift(const Point2& p) { return Point3(p.x(), p.y(), 0.0); }
+
+// One integer per cell, for hash sets and maps of cells.
+inline int64_t CellKey(Cell c) {
+  return (static_cast<int64_t>(c.y) << 32) ^ static_cast<uint32_t>(c.x);
+}
 
 }  // namespace swarmplan

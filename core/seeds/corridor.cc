@@ -6,8 +6,6 @@
 namespace swarmplan {
 namespace {
 
-Point3 Lift(const Point2& p) { return Point3(p.x(), p.y(), 0.0); }
-
 Point2 UnitOr(const Point2& v, const Point2& fallback) {
   const double n = v.norm();
   return n > 0 ? Point2(v / n) : fallback;

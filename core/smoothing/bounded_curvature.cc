@@ -18,11 +18,9 @@ constexpr double kRadiusMargin = 1.01;
 constexpr double kSampledCurveSegmentInRadii = 0.25;
 constexpr double kTolerancesInRadii[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.6};
 // Merges and outward moves per tolerance at most.
-constexpr int kRepairRounds = 32;
+constexpr int kClearanceRepairRounds = 32;
 // Halvings of a colliding corner's curve before it stays sharp.
 constexpr int kMaxShrinks = 8;
-
-Point3 Lift(const Point2& p) { return Point3(p.x(), p.y(), 0.0); }
 
 double Cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -36,7 +34,7 @@ class CornerRounding {
         checker_(checker) {}
 
   BoundedCurvatureResult Run() {
-    for (int round = 0; round < kRepairRounds; ++round) {
+    for (int round = 0; round < kClearanceRepairRounds; ++round) {
       if (!MergeOneCrowdedPair() && !MoveOneCornerOut()) break;
     }
     return Assemble();

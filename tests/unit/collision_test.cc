@@ -16,8 +16,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 Point3 P(double x, double y, double z = 0.0) { return Point3(x, y, z); }
 
 // Rows given top line = row 0 (y = 0); '#' blocked, '.' free.

@@ -11,8 +11,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 std::vector<double> BruteForce(int width, int height, const std::vector<uint8_t>& blocked) {
   std::vector<double> out(blocked.size(), kInf);
   for (int y = 0; y < height; ++y) {

@@ -18,8 +18,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // --- Brute force, independent of the planner: Dijkstra over the visibility graph of every
 // lattice point that touches a blocked cell, plus start and goal, in grid coordinates. A
 // segment is allowed when it stays in the map, meets no open blocked square, runs along no

@@ -21,8 +21,6 @@
 namespace swarmplan {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // Bilinear ground from the heights, written apart from Terrain (NaN outside the centres).
 double Ground(const std::vector<double>& h, int width, int depth, double cell, const Point2& origin,
               double x, double y) {

@@ -14,8 +14,6 @@
 namespace swarmplan {
 namespace {
 
-int64_t Key(Cell c) { return (static_cast<int64_t>(c.y) << 32) ^ static_cast<uint32_t>(c.x); }
-
 struct Individual {
   std::vector<Cell> cells;
   double length = 0.0;
@@ -110,10 +108,10 @@ class GridGaSearch {
   // One-point crossover at a cell both paths share (not an end).
   void Crossover(std::vector<Cell>& a, std::vector<Cell>& b) {
     absl::flat_hash_map<int64_t, size_t> in_b;
-    for (size_t j = 1; j + 1 < b.size(); ++j) in_b[Key(b[j])] = j;
+    for (size_t j = 1; j + 1 < b.size(); ++j) in_b[CellKey(b[j])] = j;
     std::vector<std::pair<size_t, size_t>> shared;
     for (size_t i = 1; i + 1 < a.size(); ++i) {
-      if (auto it = in_b.find(Key(a[i])); it != in_b.end()) shared.push_back({i, it->second});
+      if (auto it = in_b.find(CellKey(a[i])); it != in_b.end()) shared.push_back({i, it->second});
     }
     if (shared.empty()) return;
     const auto [i, j] = shared[rng_.UniformInt(0, static_cast<int64_t>(shared.size()) - 1)];

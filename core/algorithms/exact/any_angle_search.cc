@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "absl/container/flat_hash_map.h"
+#include "core/stop_token.h"
 
 namespace swarmplan {
 namespace {
@@ -13,7 +14,6 @@ namespace {
 // Tolerance (cells) of interval comparisons: rays are recomputed in floating point from the
 // root, so an endpoint that should be a lattice value may be off by a few ulps.
 constexpr double kTol = 1e-9;
-constexpr int64_t kStopCheckInterval = 4096;
 
 struct Root {
   Point2 p;

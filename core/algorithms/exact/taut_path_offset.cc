@@ -12,7 +12,7 @@ namespace {
 
 // Distance (cells) below which a lattice point counts as lying on a segment.
 constexpr double kOnSegment = 1e-9;
-constexpr int kRepairRounds = 3;
+constexpr int kOffsetRepairRounds = 3;
 
 bool BlockedInGrid(const OccupancyGrid& grid, int x, int y) {
   return grid.InBounds(x, y) && grid.IsBlocked(x, y);
@@ -103,7 +103,7 @@ absl::StatusOr<std::vector<Point2>> OffsetTautPath(const OccupancyGrid& grid,
     for (size_t i = 0; i + 1 < moved.size(); ++i) {
       if (!checker.TraversalFree(moved[i], moved[i + 1])) {
         all_free = false;
-        if (round == kRepairRounds) {
+        if (round == kOffsetRepairRounds) {
           return absl::InternalError(
               absl::StrCat("exact any-angle path: segment ", i, " from (", moved[i].x(), ", ",
                            moved[i].y(), ") to (", moved[i + 1].x(), ", ", moved[i + 1].y(),

@@ -11,12 +11,10 @@
 #include "absl/strings/str_cat.h"
 #include "core/geometry/terrain_collision.h"
 #include "core/operators/terrain_path_cost.h"
+#include "core/stop_token.h"
 
 namespace swarmplan {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int64_t kStopCheckInterval = 4096;
 
 // The search graph: lattice nodes 0..nodes-1, node = (j * width + i) * levels + k, then the
 // start and the goal.
