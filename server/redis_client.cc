@@ -3,6 +3,7 @@
 #include <hiredis/hiredis.h>
 #include <sys/time.h>
 
+#include <algorithm>
 #include <map>
 
 #include "absl/strings/match.h"
@@ -10,6 +11,10 @@
 #include "absl/strings/str_cat.h"
 
 namespace swarmplan::server {
+
+std::string RedisMillis(absl::Duration d) {
+  return absl::StrCat(std::max<int64_t>(absl::ToInt64Milliseconds(d), 0));
+}
 namespace {
 
 RedisReply Copy(const redisReply& r) {

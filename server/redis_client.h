@@ -23,6 +23,11 @@ struct RedisEndpoint {
   std::string password;  // empty: no AUTH
 };
 
+// A duration in whole milliseconds (at least 0), as PX, BLOCK and idle-time arguments take it.
+std::string RedisMillis(absl::Duration d);
+// The longest BLOCK a command asks for: it must end before the client's socket timeout.
+inline constexpr absl::Duration kMaxRedisBlock = absl::Seconds(5);
+
 // INVALID_ARGUMENT naming `field` for anything but redis://HOST[:PORT][/DB].
 absl::StatusOr<RedisEndpoint> ParseRedisUrl(const std::string& url, const std::string& field);
 

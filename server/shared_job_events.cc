@@ -8,9 +8,6 @@
 namespace swarmplan::server {
 namespace {
 
-// Longer waits would outlast the client's socket timeout.
-constexpr absl::Duration kMaxBlock = absl::Seconds(5);
-
 // ARGV: prefix, job id, serialized event, max events, keep (ms).
 constexpr char kAppend[] = R"lua(
 local key = ARGV[1] .. 'events:' .. ARGV[2]
@@ -19,10 +16,6 @@ redis.call('PEXPIRE', key, ARGV[5])
 return entry
 )lua";
 
-std::string Millis(absl::Duration d) {
-  return absl::StrCat(std::max<int64_t>(absl::ToInt64Milliseconds(d), 0));
-}
-
 }  // namespace
 
 absl::StatusOr<std::string> SharedJobEvents::Append(const v1::JobEvent& event) {
@@ -30,7 +23,7 @@ absl::StatusOr<std::string> SharedJobEvents::Append(const v1::JobEvent& event) {
   absl::StatusOr<RedisReply> entry =
       client_.Eval(kAppend, {},
                    {prefix_, event.job_id(), event.SerializeAsString(), absl::StrCat(max_events_),
-                    Millis(keep_)});
+                    RedisMillis(keep_)});
   if (!entry.ok()) return entry.status();
   return entry->str;
 }
@@ -42,7 +35,7 @@ absl::StatusOr<std::vector<SharedJobEvents::Followed>> SharedJobEvents::Read(
   std::vector<std::string> args = {"XREAD", "COUNT", absl::StrCat(std::max(count, 1))};
   if (wait > absl::ZeroDuration()) {
     args.push_back("BLOCK");
-    args.push_back(Millis(std::min(wait, kMaxBlock)));
+    args.push_back(RedisMillis(std::min(wait, kMaxRedisBlock)));
   }
   args.push_back("STREAMS");
   const std::string key_prefix = prefix_ + "events:";

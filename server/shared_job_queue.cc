@@ -16,9 +16,6 @@ namespace swarmplan::server {
 namespace {
 
 constexpr char kGroup[] = "workers";
-// Longer waits would outlast the client's socket timeout.
-constexpr absl::Duration kMaxBlock = absl::Seconds(5);
-
 // Every script takes the key prefix as ARGV[1].
 constexpr char kQueueLua[] = R"lua(
 local function queue_key(p) return p .. 'queue' end
@@ -137,10 +134,6 @@ const std::string& Script(const char* body) {
   return it->second;
 }
 
-std::string Millis(absl::Duration d) {
-  return absl::StrCat(std::max<int64_t>(absl::ToInt64Milliseconds(d), 0));
-}
-
 bool IsFinished(const StoredJob& job) { return job.finished_at != absl::InfiniteFuture(); }
 
 void Append(std::vector<std::string>& args, const StoredJob& job) {
@@ -218,8 +211,8 @@ absl::StatusOr<std::optional<JobLease>> SharedJobQueue::Take(absl::Duration wait
   std::string cursor = "0-0";
   do {
     absl::StatusOr<RedisReply> claimed =
-        client_.Command({"XAUTOCLAIM", queue, kGroup, options_.consumer, Millis(options_.lease),
-                         cursor, "COUNT", "1"});
+        client_.Command({"XAUTOCLAIM", queue, kGroup, options_.consumer,
+                         RedisMillis(options_.lease), cursor, "COUNT", "1"});
     if (!claimed.ok()) return claimed.status();
     if (claimed->elements.size() < 2) break;
     cursor = claimed->elements[0].str;
@@ -233,7 +226,7 @@ absl::StatusOr<std::optional<JobLease>> SharedJobQueue::Take(absl::Duration wait
 
   absl::StatusOr<RedisReply> read =
       client_.Command({"XREADGROUP", "GROUP", kGroup, options_.consumer, "COUNT", "1", "BLOCK",
-                       Millis(std::min(wait, kMaxBlock)), "STREAMS", queue, ">"});
+                       RedisMillis(std::min(wait, kMaxRedisBlock)), "STREAMS", queue, ">"});
   if (!read.ok()) return read.status();
   // [[queue, [[entry, [field, value, ...]]]]], or nil after the wait.
   if (read->elements.empty() || read->elements[0].elements.size() < 2) return std::nullopt;
@@ -278,7 +271,7 @@ absl::StatusOr<bool> SharedJobQueue::RemoveWaiting(const StoredJob& job) {
 absl::Status SharedJobQueue::RequestCancel(const std::string& job_id, absl::Duration ttl) {
   return client_
       .Command({"SET", prefix_ + "cancel:" + job_id, "1", "PX",
-                Millis(std::max(ttl, absl::Milliseconds(1)))})
+                RedisMillis(std::max(ttl, absl::Milliseconds(1)))})
       .status();
 }
 

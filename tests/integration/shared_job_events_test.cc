@@ -7,9 +7,7 @@
 #include <vector>
 
 #include "absl/time/clock.h"
-#include "server/redis_client.h"
-#include "tests/integration/redis_test_server.h"
-#include "tests/integration/test_server.h"
+#include "tests/integration/redis_server_test.h"
 
 namespace swarmplan::testing {
 namespace {
@@ -30,23 +28,17 @@ v1::JobEvent Finished(const std::string& job_id) {
   return event;
 }
 
-class SharedJobEventsTest : public ::testing::Test {
+class SharedJobEventsTest : public RedisServerTest {
  protected:
   void SetUp() override {
-    absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_.path());
-    if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-    ASSERT_TRUE(redis.ok()) << redis.status();
-    redis_ = std::move(*redis);
-    absl::StatusOr<server::RedisEndpoint> endpoint = server::ParseRedisUrl(redis_->url(), "url");
-    ASSERT_TRUE(endpoint.ok()) << endpoint.status();
+    RedisServerTest::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
     absl::StatusOr<std::unique_ptr<server::RedisClient>> client =
-        server::RedisClient::Connect(*endpoint);
+        server::RedisClient::Connect(Endpoint());
     ASSERT_TRUE(client.ok()) << client.status();
     client_ = std::move(*client);
   }
 
-  TempDir dir_;
-  std::unique_ptr<RedisTestServer> redis_;
   std::unique_ptr<server::RedisClient> client_;
 };
 

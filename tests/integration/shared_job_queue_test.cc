@@ -10,8 +10,7 @@
 
 #include "absl/time/clock.h"
 #include "server/redis_store.h"
-#include "tests/integration/redis_test_server.h"
-#include "tests/integration/test_server.h"
+#include "tests/integration/redis_server_test.h"
 
 namespace swarmplan::testing {
 namespace {
@@ -35,16 +34,13 @@ StoredJob Job(const std::string& id, int state, const std::string& record) {
   return job;
 }
 
-class SharedJobQueueTest : public ::testing::Test {
+class SharedJobQueueTest : public RedisServerTest {
  protected:
   void SetUp() override {
-    absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_.path());
-    if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-    ASSERT_TRUE(redis.ok()) << redis.status();
-    redis_ = std::move(*redis);
-    absl::StatusOr<server::RedisEndpoint> endpoint = server::ParseRedisUrl(redis_->url(), "url");
-    ASSERT_TRUE(endpoint.ok()) << endpoint.status();
-    absl::StatusOr<std::unique_ptr<server::RedisStore>> store = server::RedisStore::Open(*endpoint);
+    RedisServerTest::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
+    absl::StatusOr<std::unique_ptr<server::RedisStore>> store =
+        server::RedisStore::Open(Endpoint());
     ASSERT_TRUE(store.ok()) << store.status();
     store_ = std::move(*store);
   }
@@ -77,8 +73,6 @@ class SharedJobQueueTest : public ::testing::Test {
     return n.ok() ? *n : -1;
   }
 
-  TempDir dir_;
-  std::unique_ptr<RedisTestServer> redis_;
   std::unique_ptr<server::RedisStore> store_;
 };
 

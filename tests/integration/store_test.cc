@@ -12,6 +12,7 @@
 #include "server/redis_store.h"
 #include "server/sqlite_store.h"
 #include "server/store_url.h"
+#include "tests/integration/redis_server_test.h"
 #include "tests/integration/redis_test_server.h"
 #include "tests/integration/test_server.h"
 
@@ -292,18 +293,13 @@ TEST(StoreUrlTest, ARedisWithAPasswordTakesItFromTheFileOnly) {
 }
 
 // Servers on a real redis-server whose AOF is in dir_; config_ points at it.
-class RedisStoreServerTest : public ::testing::Test {
+class RedisStoreServerTest : public RedisServerTest {
  protected:
   void SetUp() override {
-    absl::StatusOr<std::unique_ptr<RedisTestServer>> redis = RedisTestServer::Start(dir_.path());
-    if (absl::IsFailedPrecondition(redis.status())) GTEST_SKIP() << redis.status().message();
-    ASSERT_TRUE(redis.ok()) << redis.status();
-    redis_ = std::move(*redis);
-    config_.store = redis_->url();
+    RedisServerTest::SetUp();
+    if (redis_ != nullptr) config_.store = redis_->url();
   }
 
-  TempDir dir_;
-  std::unique_ptr<RedisTestServer> redis_;
   server::ServerConfig config_ = TestServer::DefaultConfig();
 };
 
