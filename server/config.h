@@ -29,6 +29,9 @@ struct ServerConfig {
   // Parsed maps held in memory; the others are parsed from the store when planned on.
   int map_cache_entries = 16;
   absl::Duration shutdown_grace = absl::Seconds(10);
+  // With a redis:// store: a running job whose replica stops renewing its lease for this long
+  // is taken over by another replica.
+  absl::Duration job_lease = absl::Seconds(10);
   // Limits.
   int max_message_bytes = 64 * 1024 * 1024;
   int64_t max_map_cells = 16LL * 1024 * 1024;

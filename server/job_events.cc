@@ -20,15 +20,17 @@ void EventDoorbell::Detach() {
   ring_ = nullptr;
 }
 
-void JobEvents::Publish(v1::JobEvent event) {
+EventPtr JobEvents::Publish(v1::JobEvent event) {
   std::vector<std::shared_ptr<EventDoorbell>> watchers;
+  EventPtr published;
   {
     absl::MutexLock lock(&mu_);
-    if (finished_) return;
+    if (finished_) return nullptr;
     event.set_job_id(job_id_);
     event.set_sequence(++sequence_);
     *event.mutable_time() = ToProto(absl::Now());
     auto ptr = std::make_shared<const v1::JobEvent>(std::move(event));
+    published = ptr;
     if (ptr->has_progress()) {
       latest_progress_ = std::move(ptr);
     } else {
@@ -38,6 +40,7 @@ void JobEvents::Publish(v1::JobEvent event) {
     watchers = watchers_;
   }
   for (const auto& w : watchers) w->Ring();
+  return published;
 }
 
 EventPtr JobEvents::Next(int64_t after) const {

@@ -37,8 +37,9 @@ class JobEvents {
   explicit JobEvents(std::string job_id) : job_id_(std::move(job_id)) {}
 
   // Stamps the event with the job id, the next sequence number and the time, then rings every
-  // watcher. Nothing is published after a finished or requeued event (IsLastEvent).
-  void Publish(v1::JobEvent event);
+  // watcher. Nothing is published after a finished or requeued event (IsLastEvent): then
+  // returns nullptr, else the event as published.
+  EventPtr Publish(v1::JobEvent event);
 
   // The first event after sequence `after` that a watcher should see, or nullptr.
   EventPtr Next(int64_t after) const;

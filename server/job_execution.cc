@@ -1,6 +1,8 @@
 // JobManager::Execute: what a worker does with one job.
 #include <spdlog/spdlog.h>
 
+#include <functional>
+
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "server/job_manager.h"
@@ -12,8 +14,13 @@ namespace {
 // Publishes a job's iterations at the rate its request asked for. Never blocks on watchers.
 class ProgressPublisher final : public Observer {
  public:
-  ProgressPublisher(Job& job, int every_iterations, absl::Duration min_interval)
-      : job_(job), every_(std::max(every_iterations, 1)), min_interval_(min_interval) {}
+  // `publish` is called with the job's lock held.
+  ProgressPublisher(Job& job, int every_iterations, absl::Duration min_interval,
+                    std::function<void(v1::JobEvent)> publish)
+      : job_(job),
+        every_(std::max(every_iterations, 1)),
+        min_interval_(min_interval),
+        publish_(std::move(publish)) {}
 
   void OnIteration(const IterationStats& stats) override {
     last_ = stats;
@@ -40,12 +47,13 @@ class ProgressPublisher final : public Observer {
     *event.mutable_progress() = ToProto(stats);
     absl::MutexLock lock(&job_.mu);
     *job_.record.mutable_progress() = event.progress();
-    job_.events.Publish(std::move(event));
+    publish_(std::move(event));
   }
 
   Job& job_;
   const int every_;
   const absl::Duration min_interval_;
+  const std::function<void(v1::JobEvent)> publish_;
   IterationStats last_;
   bool seen_ = false;
   bool published_ = false;
@@ -67,13 +75,15 @@ v1::JobState FinalState(const PlanResult& result, CancelCause cause) {
 void JobManager::Execute(const JobPtr& job) {
   {
     absl::MutexLock lock(&job->mu);
-    if (IsFinal(job->record.state())) return;
+    if (IsFinal(job->record.state()) || job->cancel_cause == CancelCause::kLeaseLost) return;
     const absl::Time now = absl::Now();
-    job->record.set_state(v1::JOB_STATE_RUNNING);
-    job->record.clear_queue_position();
-    *job->record.mutable_started_at() = ToProto(now);
-    Persist(*job);
-    job->events.Publish([] {
+    v1::Job running = job->record;
+    running.set_state(v1::JOB_STATE_RUNNING);
+    running.clear_queue_position();
+    *running.mutable_started_at() = ToProto(now);
+    if (!Persist(*job, running)) return;
+    job->record = std::move(running);
+    Announce(*job, [] {
       v1::JobEvent started;
       started.mutable_started();
       return started;
@@ -85,8 +95,10 @@ void JobManager::Execute(const JobPtr& job) {
   }
 
   const v1::ProgressOptions& progress = job->record.request().progress();
-  ProgressPublisher publisher(*job, progress.every_iterations(),
-                              FromProto(progress.min_interval()));
+  ProgressPublisher publisher(*job, progress.every_iterations(), FromProto(progress.min_interval()),
+                              [this, &job](v1::JobEvent event) ABSL_NO_THREAD_SAFETY_ANALYSIS {
+                                Announce(*job, std::move(event));
+                              });
   absl::StatusOr<PlanResult> result = RunPlan(registry_, job->plan, job->stop, publisher);
   publisher.Flush();
   if (result.ok() && !job->stop.cancelled()) {
@@ -96,14 +108,16 @@ void JobManager::Execute(const JobPtr& job) {
 
   {
     absl::MutexLock lock(&job->mu);
-    if (job->cancel_cause == CancelCause::kShutdown) {
-      // Not finished: recorded as queued so the next start runs it again.
+    if (job->cancel_cause == CancelCause::kLeaseLost) {
+      spdlog::info("job {} stopped here: another replica runs it now", job->id);
+    } else if (job->cancel_cause == CancelCause::kShutdown) {
+      // Not finished: recorded as queued so the next start (or another replica) runs it again.
       job->record.set_state(v1::JOB_STATE_QUEUED);
       job->record.clear_started_at();
       job->record.clear_progress();
-      Persist(*job);
-      spdlog::info("job {} re-queued for the next start (shutdown) algorithm={} map={}", job->id,
-                   job->plan.algorithm, job->record.request().map_id());
+      Requeue(*job);
+      spdlog::info("job {} re-queued (shutdown) algorithm={} map={}", job->id, job->plan.algorithm,
+                   job->record.request().map_id());
     } else if (!result.ok()) {
       Finish(*job, v1::JOB_STATE_FAILED, nullptr, std::string(result.status().message()));
     } else {

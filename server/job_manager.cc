@@ -91,13 +91,14 @@ std::string ListScope(std::vector<v1::JobState> states) {
 }  // namespace
 
 JobManager::JobManager(const ServerConfig& config, const Registry& registry, MapCatalog& maps,
-                       Store& store, Metrics& metrics)
+                       Store& store, Metrics& metrics, SharedJobs shared_jobs)
     : config_(config),
       registry_(registry),
       maps_(maps),
       store_(store),
       metrics_(metrics),
-      optima_(registry, config.optimum_budget, kOptimumCacheEntries) {
+      optima_(registry, config.optimum_budget, kOptimumCacheEntries),
+      shared_(std::move(shared_jobs)) {
   const int workers =
       config.workers > 0 ? config.workers : std::max(1u, std::thread::hardware_concurrency());
   queue_ = std::make_unique<JobQueue>(
@@ -107,9 +108,13 @@ JobManager::JobManager(const ServerConfig& config, const Registry& registry, Map
         metrics_.SetWorkersBusy(busy);
       });
   metrics_.SetWorkers(queue_->workers());
+  if (shared()) StartShared();
 }
 
-JobManager::~JobManager() { queue_->Stop(); }
+JobManager::~JobManager() {
+  StopShared();
+  queue_->Stop();
+}
 
 absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, uint64_t seed,
                                                 std::string* map_name) const {
@@ -166,15 +171,7 @@ absl::StatusOr<JobPtr> JobManager::FromStored(const StoredJob& stored) {
   job->record = std::move(record);
   // Nobody watches a stored job's Plan call any more.
   job->owner_gone = true;
-  if (IsFinal(job->record.state())) {
-    v1::JobEvent finished;
-    finished.mutable_finished()->set_state(job->record.state());
-    if (job->record.has_result()) {
-      *finished.mutable_finished()->mutable_result() = job->record.result();
-    }
-    finished.mutable_finished()->set_failure_reason(job->record.failure_reason());
-    job->events.Publish(std::move(finished));
-  }
+  if (IsFinal(job->record.state())) job->events.Publish(FinishedEvent(job->record));
   return job;
 }
 
@@ -213,7 +210,10 @@ int JobManager::cached_finished_jobs() const {
 void JobManager::Retire(Job& job) {
   {
     absl::MutexLock lock(&retention_mu_);
-    ++finished_in_store_;
+    // Replicas sharing a store count what all of them finished.
+    absl::StatusOr<int64_t> finished =
+        shared() ? store_.CountFinishedJobs() : absl::StatusOr<int64_t>(finished_in_store_ + 1);
+    if (finished.ok()) finished_in_store_ = *finished;
   }
   {
     absl::MutexLock lock(&mu_);
@@ -279,36 +279,66 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     job->record.set_seed(seed);
     *job->record.mutable_created_at() = ToProto(now);
     // Queue, record and announce under the job's lock: a worker cannot start it before.
-    absl::StatusOr<int> position = queue_->Push(job);
+    absl::StatusOr<int64_t> position = shared()
+                                           ? shared_.queue->Push(ToStored(job->id, job->record))
+                                           : absl::StatusOr<int64_t>(queue_->Push(job));
     if (!position.ok()) {
       absl::MutexLock lock(&mu_);
       jobs_.erase(job->id);
       return position.status();
     }
-    job->record.set_queue_position(*position);
-    Persist(*job);
+    job->record.set_queue_position(static_cast<int32_t>(*position));
+    if (!shared()) Persist(*job, job->record);  // the shared queue recorded it with its place
     spdlog::info("job {} queued algorithm={} map={} seed={} position={}", job->id,
                  job->plan.algorithm, request.map_id(), seed, *position);
     v1::JobEvent accepted;
-    accepted.mutable_accepted()->set_queue_position(*position);
+    accepted.mutable_accepted()->set_queue_position(static_cast<int32_t>(*position));
     accepted.mutable_accepted()->set_seed(seed);
-    job->events.Publish(std::move(accepted));
+    Announce(*job, std::move(accepted));
   }
+  // Until a worker here takes it, another replica may run it.
+  if (shared()) Follow(job);
   return Submitted{job, false};
 }
 
-void JobManager::Persist(Job& job) {
-  StoredJob stored;
-  stored.id = job.id;
-  stored.state = job.record.state();
-  job.record.SerializeToString(&stored.record);
-  stored.created_at = FromProto(job.record.created_at());
-  stored.client_request_id = job.record.request().client_request_id();
-  if (IsFinal(job.record.state())) stored.finished_at = FromProto(job.record.finished_at());
+bool JobManager::Persist(Job& job, const v1::Job& record) {
+  const StoredJob stored = ToStored(job.id, record);
+  if (job.lease.has_value()) {
+    absl::StatusOr<bool> held = shared_.queue->Record(*job.lease, stored);
+    if (held.ok() && *held) return true;
+    spdlog::warn("job {}: attempt {} is no longer this replica's ({}); it stops here", job.id,
+                 job.lease->attempt,
+                 held.ok() ? "another replica took it over" : held.status().ToString());
+    LoseLease(job);
+    return false;
+  }
   if (absl::Status s = store_.PutJob(stored); !s.ok()) {
-    spdlog::error("job {}: cannot record state {}: {}", job.id, StateLabel(job.record.state()),
+    spdlog::error("job {}: cannot record state {}: {}", job.id, StateLabel(record.state()),
                   s.ToString());
   }
+  return true;
+}
+
+void JobManager::Requeue(Job& job) {
+  if (!job.lease.has_value()) {
+    Persist(job, job.record);
+    return;
+  }
+  absl::StatusOr<bool> released = shared_.queue->Release(*job.lease, ToStored(job.id, job.record));
+  if (!released.ok() || !*released) {
+    spdlog::warn("job {}: cannot put it back in the shared queue ({}); its lease runs out instead",
+                 job.id,
+                 released.ok() ? "another replica took it over" : released.status().ToString());
+  }
+  job.lease.reset();
+  absl::MutexLock lock(&mu_);
+  leased_.erase(job.id);
+}
+
+void JobManager::Announce(Job& job, v1::JobEvent event) {
+  const bool share = shared() && !event.has_requeued();
+  EventPtr published = job.events.Publish(std::move(event));
+  if (share && published != nullptr) ShareEvent(job, published);
 }
 
 absl::StatusOr<JobPtr> JobManager::Find(const std::string& id) {
@@ -329,9 +359,18 @@ absl::StatusOr<JobPtr> JobManager::Find(const std::string& id) {
   if (!stored.ok()) return stored.status();
   absl::StatusOr<JobPtr> job = FromStored(*stored);
   if (!job.ok()) return job.status();
-  absl::MutexLock lock(&mu_);
-  if (auto it = jobs_.find(id); it != jobs_.end()) return it->second;  // loaded meanwhile
-  if (stored->finished_at != absl::InfiniteFuture()) CacheFinished(*job);
+  {
+    absl::MutexLock lock(&mu_);
+    if (auto it = jobs_.find(id); it != jobs_.end()) return it->second;  // loaded meanwhile
+    if (stored->finished_at != absl::InfiniteFuture()) {
+      CacheFinished(*job);
+      return *job;
+    }
+    // Unfinished and not held here: another replica submitted it (with SharedJobs only; without,
+    // every unfinished job is in memory).
+    jobs_[id] = *job;
+  }
+  if (shared()) Follow(*job);
   return *job;
 }
 
@@ -415,6 +454,8 @@ absl::StatusOr<v1::Job> JobManager::Cancel(const std::string& id) {
       (*job)->cancel_cause = CancelCause::kClient;
       if (queue_->Remove(id)) {
         Finish(**job, v1::JOB_STATE_CANCELLED, nullptr, "cancelled before it started");
+      } else if (shared() && !(*job)->lease.has_value()) {
+        if (absl::Status s = CancelShared(**job); !s.ok()) return s;
       } else {
         (*job)->stop.Cancel();
       }
@@ -432,9 +473,15 @@ absl::Status JobManager::DeleteMap(const std::string& id) {
     for (const auto& [job_id, job] : jobs_) all.push_back(job);
   }
   std::vector<std::string> holding;
+  if (shared()) {
+    absl::StatusOr<std::vector<std::string>> jobs = SharedJobsOnMap(id);
+    if (!jobs.ok()) return jobs.status();
+    holding = std::move(*jobs);
+  }
   for (const JobPtr& job : all) {
     absl::MutexLock job_lock(&job->mu);
-    if (!IsFinal(job->record.state()) && job->record.request().map_id() == id) {
+    if (!IsFinal(job->record.state()) && job->record.request().map_id() == id &&
+        std::find(holding.begin(), holding.end(), job->id) == holding.end()) {
       holding.push_back(job->id);
     }
   }
@@ -463,26 +510,40 @@ void JobManager::WatcherLeft(const JobPtr& job, bool owner, int remaining) {
   }
 }
 
+v1::Job JobManager::FinalRecord(Job& job, v1::JobState state, const PlanResult* result,
+                                const std::string& reason) {
+  v1::Job record = job.record;
+  record.set_state(state);
+  *record.mutable_finished_at() = ToProto(absl::Now());
+  record.clear_queue_position();
+  if (result != nullptr) *record.mutable_result() = ToProto(*result);
+  record.set_failure_reason(reason);
+  return record;
+}
+
 void JobManager::Finish(Job& job, v1::JobState state, const PlanResult* result,
                         const std::string& reason) {
-  const absl::Time now = absl::Now();
-  job.record.set_state(state);
-  *job.record.mutable_finished_at() = ToProto(now);
-  job.record.clear_queue_position();
-  if (result != nullptr) *job.record.mutable_result() = ToProto(*result);
-  job.record.set_failure_reason(reason);
-  Persist(job);
+  v1::Job record = FinalRecord(job, state, result, reason);
+  if (!Persist(job, record)) return;
+  if (job.lease.has_value()) {
+    job.lease.reset();
+    absl::MutexLock lock(&mu_);
+    leased_.erase(job.id);
+  }
+  Conclude(job, std::move(record));
+}
 
-  v1::JobEvent finished;
-  finished.mutable_finished()->set_state(state);
-  if (result != nullptr) *finished.mutable_finished()->mutable_result() = job.record.result();
-  finished.mutable_finished()->set_failure_reason(reason);
-  job.events.Publish(std::move(finished));
+void JobManager::Conclude(Job& job, v1::Job record) {
+  job.record = std::move(record);
+  const v1::JobState state = job.record.state();
+  Announce(job, FinishedEvent(job.record));
 
+  const absl::Time now = FromProto(job.record.finished_at());
   const absl::Time started = job.record.has_started_at() ? FromProto(job.record.started_at()) : now;
   const double seconds = absl::ToDoubleSeconds(now - started);
   metrics_.JobFinished(job.plan.algorithm, StateLabel(state), seconds,
-                       result != nullptr ? result->evaluations : 0);
+                       job.record.result().evaluations());
+  const std::string& reason = job.record.failure_reason();
   spdlog::info("job {} {} algorithm={} map={} duration={:.3f}s{}{}", job.id, StateLabel(state),
                job.plan.algorithm, job.record.request().map_id(), seconds,
                reason.empty() ? "" : " reason=", reason);
@@ -510,7 +571,10 @@ void JobManager::SweepExpired(bool now) {
 }
 
 absl::Status JobManager::Recover() {
-  absl::StatusOr<std::vector<StoredJob>> stored = store_.LoadJobsToRecover();
+  // Unfinished jobs wait in the shared queue, where any replica takes them.
+  absl::StatusOr<std::vector<StoredJob>> stored =
+      shared() ? absl::StatusOr<std::vector<StoredJob>>(std::vector<StoredJob>{})
+               : store_.LoadJobsToRecover();
   if (!stored.ok()) return stored.status();
   int requeued = 0;
   std::vector<JobPtr> failed;
@@ -524,7 +588,7 @@ absl::Status JobManager::Recover() {
     absl::ReleasableMutexLock lock(&job->mu);
     if (IsFinal(job->record.state())) {
       // Recorded before the store kept client_request_id in a column: record it there now.
-      if (!s.client_request_id_known) Persist(*job);
+      if (!s.client_request_id_known) Persist(*job, job->record);
       continue;
     }
     std::string map_name;
@@ -544,7 +608,7 @@ absl::Status JobManager::Recover() {
     job->queued_at = absl::Now();
     absl::StatusOr<int> position = queue_->Push(job, /*ignore_capacity=*/true);
     if (!position.ok()) return position.status();
-    Persist(*job);
+    Persist(*job, job->record);
     v1::JobEvent accepted;
     accepted.mutable_accepted()->set_queue_position(*position);
     accepted.mutable_accepted()->set_seed(job->record.seed());
@@ -571,6 +635,7 @@ absl::Status JobManager::Recover() {
 
 void JobManager::Shutdown(absl::Duration grace) {
   shutting_down_.store(true);
+  StopFeeding();
   queue_->StopAccepting();
   if (!queue_->WaitIdle(grace)) {
     std::vector<JobPtr> all;
@@ -588,6 +653,8 @@ void JobManager::Shutdown(absl::Duration grace) {
     queue_->WaitIdle(absl::InfiniteDuration());
   }
   queue_->Stop();
+  if (shared()) ReleaseWaiting();
+  StopShared();
   std::vector<JobPtr> all;
   {
     absl::MutexLock lock(&mu_);
@@ -597,9 +664,9 @@ void JobManager::Shutdown(absl::Duration grace) {
     absl::MutexLock lock(&job->mu);
     if (IsFinal(job->record.state())) continue;
     v1::JobEvent requeued;
-    requeued.mutable_requeued()->set_reason(
-        absl::StrCat("the server is shutting down; job ", job->id,
-                     " is queued again and runs, with its seed, when the server is back"));
+    requeued.mutable_requeued()->set_reason(absl::StrCat(
+        "the server is shutting down; job ", job->id, " is queued again and runs, with its seed, ",
+        shared() ? "on another replica" : "when the server is back"));
     job->events.Publish(std::move(requeued));
   }
 }

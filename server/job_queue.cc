@@ -66,6 +66,14 @@ bool JobQueue::WaitIdle(absl::Duration timeout) {
   return mu_.AwaitWithTimeout(absl::Condition(&idle), timeout);
 }
 
+bool JobQueue::WaitForFreeWorker(absl::Duration timeout) {
+  absl::MutexLock lock(&mu_);
+  auto free = [this]() ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_) {
+    return stopping_ || busy_ + static_cast<int>(queue_.size()) < workers();
+  };
+  return mu_.AwaitWithTimeout(absl::Condition(&free), timeout) && !stopping_;
+}
+
 void JobQueue::Stop() {
   StopAccepting();
   for (std::thread& t : threads_) {

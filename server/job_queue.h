@@ -41,6 +41,8 @@ class JobQueue {
 
   // New jobs are refused; workers take no more jobs from the queue; queued jobs stay queued.
   void StopAccepting();
+  // Waits until a worker is idle with no job waiting for it; false on timeout or when stopping.
+  bool WaitForFreeWorker(absl::Duration timeout);
   // Waits until no worker runs a job; false on timeout.
   bool WaitIdle(absl::Duration timeout);
   // StopAccepting(), then joins the workers after their current job.

@@ -105,6 +105,18 @@ struct Metrics::Impl {
                                          "from the store when asked for")
                                      .Register(*registry)
                                      .Add({});
+  prometheus::Gauge& shared_queue_depth =
+      prometheus::BuildGauge()
+          .Name("swarmplan_shared_queue_depth")
+          .Help("Jobs waiting in the queue the replicas on one Redis share")
+          .Register(*registry)
+          .Add({});
+  prometheus::Counter& reclaimed =
+      prometheus::BuildCounter()
+          .Name("swarmplan_jobs_reclaimed_total")
+          .Help("Jobs this replica took over after the lease of another replica ran out")
+          .Register(*registry)
+          .Add({});
   std::unique_ptr<prometheus::Exposer> exposer;
   int port = 0;
 
@@ -137,6 +149,12 @@ void Metrics::SetQueueDepth(int depth) { impl_->queue_depth.Set(depth); }
 void Metrics::SetWorkers(int total) { impl_->workers.Set(total); }
 
 void Metrics::SetWorkersBusy(int busy) { impl_->busy.Set(busy); }
+
+void Metrics::SetSharedQueueDepth(int64_t depth) {
+  impl_->shared_queue_depth.Set(static_cast<double>(depth));
+}
+
+void Metrics::JobReclaimed() { impl_->reclaimed.Increment(); }
 
 void Metrics::SetMapsStored(int64_t maps) {
   if (maps >= 0) impl_->maps.Set(static_cast<double>(maps));

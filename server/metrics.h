@@ -21,6 +21,10 @@ namespace swarmplan::server {
 //   swarmplan_maps_stored                            maps in the store
 //   swarmplan_job_cache_entries                      finished jobs held in memory (the rest:
 //                                                    in the store only)
+//   swarmplan_shared_queue_depth                     jobs waiting in the queue replicas share
+//                                                    (a redis:// store only)
+//   swarmplan_jobs_reclaimed_total                   jobs this replica took over after another
+//                                                    one's lease ran out
 //   swarmplan_build_info{version}                    1
 class Metrics {
  public:
@@ -35,6 +39,8 @@ class Metrics {
   void SetWorkersBusy(int busy);
   void SetMapsStored(int64_t maps);  // ignored when negative (the store could not say)
   void SetJobCacheEntries(int entries);
+  void SetSharedQueueDepth(int64_t depth);
+  void JobReclaimed();
   void RpcHandled(const std::string& method, const std::string& code, double seconds);
 
   // Serves GET /metrics on address:port (port 0: any free port). FAILED_PRECONDITION naming

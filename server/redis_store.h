@@ -50,6 +50,7 @@ class RedisStore final : public Store {
   absl::StatusOr<std::vector<std::string>> DeleteOldestFinishedJobs(int64_t n) override;
 
   RedisClient& client() { return *client_; }
+  const std::string& prefix() const { return prefix_; }
 
  private:
   RedisStore(std::unique_ptr<RedisClient> client, std::string prefix)

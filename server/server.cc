@@ -14,6 +14,7 @@
 #include "server/job_manager.h"
 #include "server/map_catalog.h"
 #include "server/metrics.h"
+#include "server/redis_store.h"
 #include "server/reflection.h"
 #include "server/rpc_metrics.h"
 #include "server/services.h"
@@ -40,6 +41,31 @@ absl::StatusOr<std::shared_ptr<grpc::ServerCredentials>> Credentials(const Serve
   grpc::SslServerCredentialsOptions options;
   options.pem_key_cert_pairs.push_back({*key, *cert});
   return grpc::SslServerCredentials(options);
+}
+
+// The queue and event streams replicas share, for a redis:// store; none for SQLite.
+absl::StatusOr<SharedJobs> OpenSharedJobs(Store& store, const ServerConfig& config) {
+  auto* redis = dynamic_cast<RedisStore*>(&store);
+  if (redis == nullptr) return SharedJobs{};
+  constexpr absl::Duration kShortestLease = absl::Milliseconds(300);
+  if (config.job_lease < kShortestLease) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("--job-lease: ", absl::FormatDuration(config.job_lease), " is shorter than ",
+                     absl::FormatDuration(kShortestLease)));
+  }
+  SharedJobQueue::Options options;
+  options.consumer = UniqueConsumerName();
+  options.lease = config.job_lease;
+  options.capacity = config.queue_capacity;
+  absl::StatusOr<std::unique_ptr<SharedJobQueue>> queue =
+      SharedJobQueue::Open(redis->client(), redis->prefix(), options);
+  if (!queue.ok()) return queue.status();
+  SharedJobs shared;
+  shared.queue = std::move(*queue);
+  shared.events = std::make_unique<SharedJobEvents>(redis->client(), redis->prefix());
+  spdlog::info("shared job queue: replica {} (lease {})", options.consumer,
+               absl::FormatDuration(options.lease));
+  return shared;
 }
 
 }  // namespace
@@ -104,8 +130,10 @@ absl::StatusOr<std::unique_ptr<Server>> Server::Start(const ServerConfig& config
     }
   }
 
+  absl::StatusOr<SharedJobs> shared = OpenSharedJobs(*impl->store, config);
+  if (!shared.ok()) return shared.status();
   impl->jobs = std::make_unique<JobManager>(impl->config, registry, *impl->maps, *impl->store,
-                                            impl->metrics);
+                                            impl->metrics, std::move(*shared));
   if (absl::Status s = impl->jobs->Recover(); !s.ok()) return s;
 
   impl->map_service = std::make_unique<MapServiceImpl>(*impl->maps, *impl->jobs, impl->metrics,

@@ -1,0 +1,139 @@
+// Replicas on one Redis: any replica serves any map and job, and the shared queue runs each job
+// once, wherever it was submitted; events and cancellations cross replicas.
+#include <thread>
+
+#include "absl/time/clock.h"
+#include "tests/integration/redis_server_test.h"
+
+namespace swarmplan::testing {
+namespace {
+
+class ReplicasTest : public RedisServerTest {
+ protected:
+  void SetUp() override {
+    RedisServerTest::SetUp();
+    if (redis_ == nullptr) return;
+    for (int i = 0; i < 3; ++i) {
+      server::ServerConfig config = TestServer::DefaultConfig();
+      config.store = redis_->url();
+      config.job_lease = absl::Seconds(2);
+      replicas_.push_back(std::make_unique<TestServer>(dirs_[i].path(), config));
+    }
+  }
+  void TearDown() override { replicas_.clear(); }
+
+  TestServer& replica(int i) { return *replicas_[i]; }
+
+  TempDir dirs_[3];
+  std::vector<std::unique_ptr<TestServer>> replicas_;
+};
+
+TEST_F(ReplicasTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnother) {
+  const std::string map_id = replica(0).UploadGrid("shared", 8, 5, 4);
+  const v1::Job submitted = replica(2).SubmitOk(TestServer::Request(map_id, "astar", 7.5));
+  const v1::Job done = replica(2).WaitUntilFinal(submitted.id());
+  ASSERT_EQ(done.state(), v1::JOB_STATE_SUCCEEDED) << done.failure_reason();
+  EXPECT_GT(done.result().raw_path_size(), 2);  // around the wall
+  // Every replica answers with the same record.
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(replica(i).WaitUntilFinal(submitted.id()).ShortDebugString(),
+              done.ShortDebugString());
+  }
+}
+
+TEST_F(ReplicasTest, AJobSubmittedOnOneIsWatchedOnAnotherAndCancelledFromTheThird) {
+  const std::string map_id = replica(0).UploadGrid("grid", 6, 4);
+  const v1::Job submitted = replica(0).SubmitOk(TestServer::SlowRequest(map_id, 3000, 10));
+  replica(1).WaitForState(submitted.id(), v1::JOB_STATE_RUNNING);
+
+  v1::WatchJobRequest watch;
+  watch.set_id(submitted.id());
+  grpc::ClientContext watch_context;
+  auto watcher = replica(1).jobs().WatchJob(&watch_context, watch);
+  v1::JobEvent first;
+  ASSERT_TRUE(watcher->Read(&first));  // the latest state first
+  std::vector<v1::JobEvent> events = {first};
+  std::thread reader([&] {
+    v1::JobEvent event;
+    while (watcher->Read(&event)) events.push_back(event);
+  });
+  // Progress from the replica running it reaches the watcher.
+  const absl::Time give_up = absl::Now() + absl::Seconds(20);
+  while (replica(1).GetJob(submitted.id()).progress().iteration() < 5 && absl::Now() < give_up) {
+    absl::SleepFor(absl::Milliseconds(10));
+  }
+
+  v1::CancelJobRequest cancel;
+  cancel.set_id(submitted.id());
+  v1::Job cancelled;
+  grpc::ClientContext cancel_context;
+  const absl::Time asked = absl::Now();
+  ASSERT_TRUE(replica(2).jobs().CancelJob(&cancel_context, cancel, &cancelled).ok());
+  reader.join();
+  const absl::Duration to_end = absl::Now() - asked;
+  EXPECT_TRUE(watcher->Finish().ok());
+
+  ASSERT_FALSE(events.empty());
+  ASSERT_TRUE(events.back().has_finished()) << events.back().ShortDebugString();
+  EXPECT_EQ(events.back().finished().state(), v1::JOB_STATE_CANCELLED);
+  bool saw_progress = false;
+  for (const v1::JobEvent& e : events) saw_progress = saw_progress || e.has_progress();
+  EXPECT_TRUE(saw_progress);
+  // Stopped long before its 30 s of iterations.
+  EXPECT_LT(to_end, absl::Seconds(10));
+  for (int i = 0; i < 3; ++i) {
+    const v1::Job job = replica(i).WaitUntilFinal(submitted.id());
+    EXPECT_EQ(job.state(), v1::JOB_STATE_CANCELLED);
+    EXPECT_LT(job.result().iterations(), 3000);
+  }
+}
+
+TEST_F(ReplicasTest, AWaitingJobCancelledOnAnotherReplicaNeverRuns) {
+  const std::string map_id = replica(0).UploadGrid("grid", 6, 4);
+  // Three long jobs keep the three workers busy; the fourth waits in the shared queue.
+  std::vector<std::string> busy;
+  for (int i = 0; i < 3; ++i) {
+    busy.push_back(replica(0).SubmitOk(TestServer::SlowRequest(map_id, 3000, 10)).id());
+  }
+  for (const std::string& id : busy) replica(0).WaitForState(id, v1::JOB_STATE_RUNNING);
+  const v1::Job waiting = replica(1).SubmitOk(TestServer::SlowRequest(map_id, 1, 0));
+  EXPECT_EQ(waiting.state(), v1::JOB_STATE_QUEUED);
+
+  v1::CancelJobRequest cancel;
+  cancel.set_id(waiting.id());
+  v1::Job cancelled;
+  grpc::ClientContext context;
+  ASSERT_TRUE(replica(2).jobs().CancelJob(&context, cancel, &cancelled).ok());
+  EXPECT_EQ(cancelled.state(), v1::JOB_STATE_CANCELLED);
+  const v1::Job on_submitter = replica(1).WaitUntilFinal(waiting.id());
+  EXPECT_EQ(on_submitter.state(), v1::JOB_STATE_CANCELLED);
+  EXPECT_FALSE(on_submitter.has_started_at());
+
+  for (const std::string& id : busy) {
+    v1::CancelJobRequest stop;
+    stop.set_id(id);
+    grpc::ClientContext stop_context;
+    ASSERT_TRUE(replica(1).jobs().CancelJob(&stop_context, stop, &cancelled).ok());
+  }
+  for (const std::string& id : busy) {
+    EXPECT_EQ(replica(2).WaitUntilFinal(id).state(), v1::JOB_STATE_CANCELLED);
+  }
+}
+
+TEST_F(ReplicasTest, JobsSubmittedOnOneReplicaAllFinishOnce) {
+  const std::string map_id = replica(0).UploadGrid("grid", 6, 4);
+  std::vector<std::string> ids;
+  for (int i = 0; i < 6; ++i) {
+    // Two rounds of three: the queue holds at most 4 waiting jobs.
+    if (i == 3) absl::SleepFor(absl::Milliseconds(300));
+    ids.push_back(replica(0).SubmitOk(TestServer::SlowRequest(map_id, 20, 10)).id());
+  }
+  for (const std::string& id : ids) {
+    const v1::Job job = replica(1).WaitUntilFinal(id);
+    EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED);
+    EXPECT_EQ(job.result().iterations(), 20);
+  }
+}
+
+}  // namespace
+}  // namespace swarmplan::testing
