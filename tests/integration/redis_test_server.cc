@@ -1,9 +1,6 @@
 #include "tests/integration/redis_test_server.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,28 +12,9 @@
 #include "absl/strings/str_split.h"
 #include "absl/time/clock.h"
 #include "server/redis_client.h"
+#include "tests/integration/server_process.h"
 
 namespace swarmplan::testing {
-namespace {
-
-// A port nobody listens on now (the kernel's pick for a socket bound to port 0).
-int UnusedPort() {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  address.sin_port = 0;
-  socklen_t length = sizeof(address);
-  int port = 0;
-  if (bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0 &&
-      getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0) {
-    port = ntohs(address.sin_port);
-  }
-  close(fd);
-  return port;
-}
-
-}  // namespace
 
 std::string RedisServerBinary() {
   const char* path = std::getenv("PATH");

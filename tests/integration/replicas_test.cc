@@ -1,9 +1,11 @@
 // Replicas on one Redis: any replica serves any map and job, and the shared queue runs each job
-// once, wherever it was submitted; events and cancellations cross replicas.
+// once, wherever it was submitted; events and cancellations cross replicas; the job of a killed
+// replica finishes on another with the identical path.
 #include <thread>
 
 #include "absl/time/clock.h"
 #include "tests/integration/redis_server_test.h"
+#include "tests/integration/server_process.h"
 
 namespace swarmplan::testing {
 namespace {
@@ -133,6 +135,113 @@ TEST_F(ReplicasTest, JobsSubmittedOnOneReplicaAllFinishOnce) {
     EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED);
     EXPECT_EQ(job.result().iterations(), 20);
   }
+}
+
+v1::Job GetJob(v1::JobService::Stub& jobs, const std::string& id) {
+  v1::GetJobRequest request;
+  request.set_id(id);
+  v1::Job job;
+  grpc::ClientContext context;
+  EXPECT_TRUE(jobs.GetJob(&context, request, &job).ok());
+  return job;
+}
+
+v1::Job WaitUntil(v1::JobService::Stub& jobs, const std::string& id, bool (*done)(v1::JobState)) {
+  const absl::Time give_up = absl::Now() + absl::Seconds(90);
+  v1::Job job = GetJob(jobs, id);
+  while (!done(job.state()) && absl::Now() < give_up) {
+    absl::SleepFor(absl::Milliseconds(20));
+    job = GetJob(jobs, id);
+  }
+  return job;
+}
+
+std::string Submit(v1::JobService::Stub& jobs, const v1::PlanRequest& request) {
+  v1::SubmitPlanResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = jobs.SubmitPlan(&context, request, &response);
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  return response.job().id();
+}
+
+using ReplicaFailoverTest = RedisServerTest;
+
+TEST_F(ReplicaFailoverTest, TheJobOfAKilledReplicaFinishesOnAnotherWithTheIdenticalPath) {
+  const std::vector<std::string> args = {"--store=" + redis_->url(), "--job-lease=1s",
+                                         "--workers=1"};
+  absl::StatusOr<std::unique_ptr<ServerProcess>> doomed = ServerProcess::Start(args);
+  ASSERT_TRUE(doomed.ok()) << doomed.status();
+
+  v1::UploadMapRequest upload;
+  upload.set_name("hall");
+  upload.mutable_source()->mutable_files()->set_format("ascii");
+  v1::MapFile* file = upload.mutable_source()->mutable_files()->add_files();
+  file->set_name("hall.txt");
+  std::string rows;
+  for (int y = 0; y < 24; ++y) {
+    std::string row(48, '.');
+    if (y > 2 && y < 21) row.replace(10 + (y % 3) * 12, 4, "####");
+    rows += row + "\n";
+  }
+  file->set_content(rows);
+  v1::UploadMapResponse uploaded;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE((*doomed)->maps().UploadMap(&context, upload, &uploaded).ok());
+  }
+  // A swarm that runs for a second or more, so that it is still running when its replica dies.
+  v1::PlanRequest request;
+  request.set_map_id(uploaded.map().id());
+  request.set_algorithm("pso");
+  request.mutable_start()->set_x(1.5);
+  request.mutable_start()->set_y(1.5);
+  request.mutable_goal()->set_x(46.5);
+  request.mutable_goal()->set_y(22.5);
+  request.set_seed(77);
+  (*request.mutable_parameters())["population"].set_int_value(1000);
+  (*request.mutable_parameters())["iterations"].set_int_value(600);
+  request.set_detached(true);
+  const std::string id = Submit((*doomed)->jobs(), request);
+  const v1::Job running =
+      WaitUntil((*doomed)->jobs(), id, [](v1::JobState s) { return s != v1::JOB_STATE_QUEUED; });
+  ASSERT_EQ(running.state(), v1::JOB_STATE_RUNNING) << running.ShortDebugString();
+  const absl::Time killed = absl::Now();
+  (*doomed)->Kill();
+
+  absl::StatusOr<std::unique_ptr<ServerProcess>> survivor = ServerProcess::Start(args);
+  ASSERT_TRUE(survivor.ok()) << survivor.status();
+  const v1::Job rerun = WaitUntil((*survivor)->jobs(), id, IsFinalState);
+  ASSERT_EQ(rerun.state(), v1::JOB_STATE_SUCCEEDED) << rerun.ShortDebugString();
+  EXPECT_GT(rerun.started_at().seconds() * 1000000000LL + rerun.started_at().nanos(),
+            absl::ToUnixNanos(killed));
+  EXPECT_EQ(rerun.result().iterations(), 600);
+
+  // The same request again, run from its start on the survivor: the same path, bit for bit.
+  request.set_detached(false);
+  const v1::Job reference =
+      WaitUntil((*survivor)->jobs(), Submit((*survivor)->jobs(), request), IsFinalState);
+  ASSERT_EQ(reference.state(), v1::JOB_STATE_SUCCEEDED);
+  ASSERT_EQ(rerun.result().raw_path_size(), reference.result().raw_path_size());
+  for (int i = 0; i < rerun.result().raw_path_size(); ++i) {
+    EXPECT_EQ(rerun.result().raw_path(i).x(), reference.result().raw_path(i).x());
+    EXPECT_EQ(rerun.result().raw_path(i).y(), reference.result().raw_path(i).y());
+  }
+  EXPECT_EQ(rerun.result().fitness(), reference.result().fitness());
+
+  // Nothing is left queued or held: the killed replica's entry was taken over and acknowledged.
+  absl::StatusOr<std::unique_ptr<server::RedisClient>> client =
+      server::RedisClient::Connect(Endpoint());
+  ASSERT_TRUE(client.ok()) << client.status();
+  absl::StatusOr<server::RedisReply> queued = (*client)->Command({"XLEN", "swarmplan:queue"});
+  ASSERT_TRUE(queued.ok()) << queued.status();
+  EXPECT_EQ(queued->integer, 0);
+  v1::ListJobsRequest unfinished;
+  unfinished.add_states(v1::JOB_STATE_QUEUED);
+  unfinished.add_states(v1::JOB_STATE_RUNNING);
+  v1::ListJobsResponse listed;
+  grpc::ClientContext context;
+  ASSERT_TRUE((*survivor)->jobs().ListJobs(&context, unfinished, &listed).ok());
+  EXPECT_EQ(listed.jobs_size(), 0);
 }
 
 }  // namespace

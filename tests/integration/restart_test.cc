@@ -1,12 +1,9 @@
 // Durability over restarts: maps and finished jobs survive; jobs queued or running at shutdown
 // run again with their recorded seed; acknowledged maps survive kill -9 of the server binary.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <thread>
 
 #include "absl/time/clock.h"
+#include "tests/integration/server_process.h"
 #include "tests/integration/test_server.h"
 
 namespace swarmplan::testing {
@@ -172,32 +169,13 @@ TEST(RestartTest, FinishedJobsOlderThanTheRetentionPeriodAreDropped) {
   EXPECT_EQ(ListAllMaps(server).size(), 1u);  // maps have no retention
 }
 
-int FreePort() {
-  // Ask the kernel for a free port by starting and stopping a server on port 0.
-  TempDir dir;
-  server::ServerConfig config = TestServer::DefaultConfig();
-  TestServer probe(dir.path(), config);
-  return probe.port();
-}
-
 TEST(RestartTest, AcknowledgedMapsAndJobsSurviveKill9OfTheServerBinary) {
   TempDir dir;
-  const int port = FreePort();
-  const std::string store = "--store=" + StoreUrlFor(dir.path());
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const std::string listen = "--listen=127.0.0.1:" + std::to_string(port);
-    execl(SWARMPLAN_SERVER_BINARY, SWARMPLAN_SERVER_BINARY, listen.c_str(), store.c_str(),
-          "--metrics-port=0", "--log-level=warn", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  auto channel =
-      grpc::CreateChannel("127.0.0.1:" + std::to_string(port), grpc::InsecureChannelCredentials());
-  ASSERT_TRUE(
-      channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(20)));
-  auto maps = v1::MapService::NewStub(channel);
-  auto jobs = v1::JobService::NewStub(channel);
+  absl::StatusOr<std::unique_ptr<ServerProcess>> process =
+      ServerProcess::Start({"--store=" + StoreUrlFor(dir.path())});
+  ASSERT_TRUE(process.ok()) << process.status();
+  v1::MapService::Stub* maps = &(*process)->maps();
+  v1::JobService::Stub* jobs = &(*process)->jobs();
   v1::UploadMapRequest upload;
   upload.set_name("kept");
   upload.mutable_source()->mutable_files()->set_format("ascii");
@@ -219,9 +197,7 @@ TEST(RestartTest, AcknowledgedMapsAndJobsSurviveKill9OfTheServerBinary) {
     ASSERT_TRUE(status.ok()) << status.error_message();
     job_id = events.front().job_id();
   }
-  kill(pid, SIGKILL);
-  int wstatus = 0;
-  waitpid(pid, &wstatus, 0);
+  (*process)->Kill();
 
   TestServer server(dir.path());
   v1::GetMapRequest get;
