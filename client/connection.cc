@@ -6,6 +6,7 @@
 
 #include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
+#include "client/server_list.h"
 #include "grpcpp/create_channel.h"
 #include "grpcpp/security/credentials.h"
 #include "grpcpp/support/channel_arguments.h"
@@ -47,7 +48,16 @@ absl::StatusOr<Connection> Connection::Open(const GlobalOptions& options) {
   grpc::ChannelArguments arguments;
   arguments.SetMaxReceiveMessageSize(-1);  // maps and results can be large
   arguments.SetMaxSendMessageSize(-1);
-  connection.channel_ = grpc::CreateCustomChannel(options.server, credentials, arguments);
+  absl::StatusOr<std::string> target = ChannelTarget(options.server);
+  if (!target.ok()) return target.status();
+  if (IsServerList(options.server)) {
+    // Each call goes to the next replica; TLS checks the certificate against the first name.
+    arguments.SetLoadBalancingPolicyName("round_robin");
+    arguments.SetString(GRPC_ARG_DEFAULT_AUTHORITY,
+                        std::string(absl::StripAsciiWhitespace(
+                            options.server.substr(0, options.server.find(',')))));
+  }
+  connection.channel_ = grpc::CreateCustomChannel(*target, credentials, arguments);
   return connection;
 }
 

@@ -15,7 +15,9 @@ int main(int argc, char** argv) {
   app.footer(ExitCodesHelp());
 
   GlobalOptions global;
-  app.add_option("--server", global.server, "Server address HOST:PORT")
+  app.add_option("--server", global.server,
+                 "Server address HOST:PORT, or replicas HOST:PORT,HOST:PORT,... (calls are "
+                 "spread round-robin over every address they resolve to)")
       ->envname("SWARMPLAN_SERVER")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
       ->capture_default_str();

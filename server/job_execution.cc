@@ -73,9 +73,13 @@ v1::JobState FinalState(const PlanResult& result, CancelCause cause) {
 }  // namespace
 
 void JobManager::Execute(const JobPtr& job) {
+  // With the shared queue, the attempt this run belongs to: a later attempt taken here after
+  // this one was lost is not this run's to record.
+  int64_t attempt = 0;
   {
     absl::MutexLock lock(&job->mu);
     if (IsFinal(job->record.state()) || job->cancel_cause == CancelCause::kLeaseLost) return;
+    if (job->lease.has_value()) attempt = job->lease->attempt;
     const absl::Time now = absl::Now();
     v1::Job running = job->record;
     running.set_state(v1::JOB_STATE_RUNNING);
@@ -108,7 +112,8 @@ void JobManager::Execute(const JobPtr& job) {
 
   {
     absl::MutexLock lock(&job->mu);
-    if (job->cancel_cause == CancelCause::kLeaseLost) {
+    const int64_t holding = job->lease.has_value() ? job->lease->attempt : 0;
+    if (job->cancel_cause == CancelCause::kLeaseLost || holding != attempt) {
       spdlog::info("job {} stopped here: another replica runs it now", job->id);
     } else if (job->cancel_cause == CancelCause::kShutdown) {
       // Not finished: recorded as queued so the next start (or another replica) runs it again.

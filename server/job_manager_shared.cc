@@ -21,6 +21,9 @@ constexpr absl::Duration kCancelPoll = absl::Milliseconds(50);
 constexpr absl::Duration kFollowedStoreCheck = absl::Seconds(1);
 // The longest a loop waits in Redis, so that it notices a stop.
 constexpr absl::Duration kLoopWait = absl::Milliseconds(250);
+// The relay's wait: a job followed meanwhile joins its next read, so this bounds how late the
+// first events of a newly followed job arrive.
+constexpr absl::Duration kRelayWait = absl::Milliseconds(50);
 constexpr absl::Duration kRetryAfterError = absl::Milliseconds(500);
 constexpr absl::Duration kDepthReportEvery = absl::Seconds(1);
 
@@ -248,11 +251,11 @@ void JobManager::RelayLoop() {
     }
     if (cursors.empty()) {
       heard.clear();
-      SleepUnless(stop_shared_, kLoopWait);
+      SleepUnless(stop_shared_, kRelayWait);
       continue;
     }
     absl::StatusOr<std::vector<SharedJobEvents::Followed>> read =
-        shared_.events->Read(cursors, kLoopWait);
+        shared_.events->Read(cursors, kRelayWait);
     if (!read.ok()) {
       spdlog::warn("cannot follow the events of jobs on other replicas: {}",
                    read.status().ToString());

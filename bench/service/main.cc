@@ -31,6 +31,7 @@ struct Options {
   std::string markdown;
   std::string store;  // a second store to compare with SQLite
   bool store_only = false;
+  int max_replicas = 3;
 };
 
 PlanCase Bso(const Options& options, int iterations) {
@@ -54,6 +55,19 @@ PlanCase AStar(const Options& options) {
   return plan;
 }
 
+absl::Status MeasureReplicaCounts(const Options& options, ServiceBenchReport& report) {
+  const PlanCase plan = Bso(options, options.throughput_iterations);
+  report.replicas_plan =
+      absl::StrCat("bso (", options.throughput_iterations, " iterations) on circles.json");
+  for (int n = 1; n <= options.max_replicas; ++n) {
+    std::cerr << "replicas: " << n << "...\n";
+    absl::StatusOr<ReplicasResult> r = MeasureReplicas(plan, options.store, n, options.jobs);
+    if (!r.ok()) return r.status();
+    report.replicas.push_back(*r);
+  }
+  return absl::OkStatus();
+}
+
 absl::Status MeasureStores(const Options& options, ServiceBenchReport& report) {
   for (const PlanCase& plan : {AStar(options), Bso(options, options.iterations)}) {
     std::cerr << "stores: " << plan.algorithm << "...\n";
@@ -63,7 +77,7 @@ absl::Status MeasureStores(const Options& options, ServiceBenchReport& report) {
     if (plan.algorithm == "bso") r->label += absl::StrCat(" (", options.iterations, " iterations)");
     report.stores.push_back(*r);
   }
-  return absl::OkStatus();
+  return options.max_replicas > 0 ? MeasureReplicaCounts(options, report) : absl::OkStatus();
 }
 
 absl::Status Measure(const Options& options, ServiceBenchReport& report) {
@@ -130,7 +144,11 @@ int Main(int argc, char** argv) {
   app.add_option("--markdown", options.markdown, "also write the report to this file");
   app.add_option("--store", options.store,
                  "also compare the embedded SQLite store with this one (redis://HOST:PORT)");
-  app.add_flag("--store-only", options.store_only, "measure the stores only (needs --store)");
+  app.add_flag("--store-only", options.store_only,
+               "measure the stores and the replicas only (needs --store)");
+  app.add_option("--max-replicas", options.max_replicas,
+                 "with --store: jobs per second with 1..N replicas sharing its queue (0: skip)")
+      ->check(CLI::Range(0, 16));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

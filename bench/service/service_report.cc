@@ -121,6 +121,22 @@ void AppendStores(const ServiceBenchReport& report, std::string& md) {
   absl::StrAppend(&md, "\n");
 }
 
+void AppendReplicas(const ServiceBenchReport& report, std::string& md) {
+  if (report.replicas.empty()) return;
+  const ReplicasResult& one = report.replicas.front();
+  absl::StrAppend(&md, "## 5. Replicas on one shared queue\n\n", one.jobs, " jobs of ",
+                  report.replicas_plan,
+                  " submitted round-robin to servers of 1 worker each on one Redis, until all "
+                  "are final.\n\n| replicas | seconds | jobs/s | jobs/s over 1 replica |\n"
+                  "|---:|---:|---:|---:|\n");
+  for (const ReplicasResult& r : report.replicas) {
+    absl::StrAppend(&md, "| ", r.replicas, " | ", absl::StrFormat("%.3f", r.seconds), " | ",
+                    absl::StrFormat("%.2f", r.jobs_per_second()), " | ",
+                    Ratio(r.jobs_per_second(), one.jobs_per_second()), " |\n");
+  }
+  absl::StrAppend(&md, "\n");
+}
+
 }  // namespace
 
 std::string ServiceReportMarkdown(const ServiceBenchReport& report) {
@@ -132,6 +148,7 @@ std::string ServiceReportMarkdown(const ServiceBenchReport& report) {
   if (report.one_worker.jobs > 0) AppendThroughput(report, md);
   if (!report.unwatched.empty()) AppendWatcher(report, md);
   AppendStores(report, md);
+  AppendReplicas(report, md);
   return md;
 }
 

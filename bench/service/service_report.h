@@ -20,6 +20,8 @@ struct ServiceBenchReport {
   std::vector<WatcherResult> unwatched;  // one per run
   std::vector<WatcherResult> watched;
   std::vector<StoreLatencyResult> stores;  // with --store only
+  std::string replicas_plan;               // with --store only
+  std::vector<ReplicasResult> replicas;    // 1, 2, ... replicas
 };
 
 std::string ServiceReportMarkdown(const ServiceBenchReport& report);

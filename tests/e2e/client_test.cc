@@ -10,6 +10,7 @@
 #include "client/map_render.h"
 #include "client/output.h"
 #include "client/path_files.h"
+#include "client/server_list.h"
 #include "core/map/io/map_io.h"
 #include "gtest/gtest.h"
 
@@ -56,6 +57,17 @@ TEST(ClientArguments, ParsesDurations) {
   EXPECT_DOUBLE_EQ(*ParseSeconds("--time-budget", "2m"), 120.0);
   EXPECT_FALSE(ParseSeconds("--time-budget", "-1s").ok());
   EXPECT_FALSE(ParseSeconds("--time-budget", "soon").ok());
+}
+
+TEST(ClientServerList, OneAddressStaysAsGivenAndAListBecomesOneBalancedTarget) {
+  EXPECT_EQ(*client::ChannelTarget("example.org:50051"), "example.org:50051");
+  EXPECT_EQ(*client::ChannelTarget("127.0.0.1:7001, 127.0.0.1:7002,127.0.0.1:7001"),
+            "ipv4:127.0.0.1:7001,127.0.0.1:7002");
+  EXPECT_EQ(*client::ChannelTarget("[::1]:7001,[::1]:7002"), "ipv6:[::1]:7001,[::1]:7002");
+  const absl::StatusOr<std::string> no_port = client::ChannelTarget("127.0.0.1:7001,127.0.0.1");
+  ASSERT_FALSE(no_port.ok());
+  EXPECT_NE(no_port.status().message().find("--server"), std::string::npos);
+  EXPECT_FALSE(client::ChannelTarget("127.0.0.1:7001,[::1]:7002").ok());  // two families
 }
 
 TEST(ClientExitCodes, MapStatusCodesAndJobStates) {
