@@ -15,19 +15,30 @@ class ReplicasTest : public RedisServerTest {
   void SetUp() override {
     RedisServerTest::SetUp();
     if (redis_ == nullptr) return;
-    for (int i = 0; i < 3; ++i) {
-      server::ServerConfig config = TestServer::DefaultConfig();
-      config.store = redis_->url();
-      config.job_lease = absl::Seconds(2);
-      replicas_.push_back(std::make_unique<TestServer>(dirs_[i].path(), config));
-    }
+    for (int i = 0; i < kReplicas; ++i) AddReplica();
   }
   void TearDown() override { replicas_.clear(); }
 
+  // A replica of one worker on the test's Redis.
+  TestServer& AddReplica() {
+    server::ServerConfig config = TestServer::DefaultConfig();
+    config.store = redis_->url();
+    config.job_lease = absl::Seconds(2);
+    dirs_.push_back(std::make_unique<TempDir>());
+    replicas_.push_back(std::make_unique<TestServer>(dirs_.back()->path(), config));
+    return *replicas_.back();
+  }
   TestServer& replica(int i) { return *replicas_[i]; }
 
-  TempDir dirs_[3];
+  static constexpr int kReplicas = 3;
+  std::vector<std::unique_ptr<TempDir>> dirs_;
   std::vector<std::unique_ptr<TestServer>> replicas_;
+};
+
+// Tests that need the replicas started in a given order.
+class ReplicasInOrderTest : public ReplicasTest {
+ protected:
+  void SetUp() override { RedisServerTest::SetUp(); }
 };
 
 TEST_F(ReplicasTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnother) {
@@ -135,6 +146,53 @@ TEST_F(ReplicasTest, JobsSubmittedOnOneReplicaAllFinishOnce) {
     EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED);
     EXPECT_EQ(job.result().iterations(), 20);
   }
+}
+
+TEST_F(ReplicasTest, AClientRequestIdNamesOneJobOnEveryReplica) {
+  const std::string map_id = replica(0).UploadGrid("grid", 6, 4);
+  v1::PlanRequest request = TestServer::SlowRequest(map_id, 5, 1);
+  request.set_client_request_id("order-17");
+  const v1::Job first = replica(0).SubmitOk(request);
+  EXPECT_EQ(replica(1).SubmitOk(request).id(), first.id());
+  EXPECT_EQ(replica(2).SubmitOk(request).id(), first.id());
+  request.set_seed(request.seed() + 1);  // another request under the same id
+  v1::SubmitPlanResponse response;
+  grpc::ClientContext context;
+  EXPECT_EQ(replica(2).jobs().SubmitPlan(&context, request, &response).error_code(),
+            grpc::StatusCode::ALREADY_EXISTS);
+}
+
+TEST_F(ReplicasInOrderTest, APlanCallerLeavingCancelsItsJobOnTheReplicaRunningIt) {
+  TestServer& caller = AddReplica();
+  const std::string map_id = caller.UploadGrid("grid", 6, 4);
+  // The caller's only worker is busy, so the job of its Plan call runs on the replica after it.
+  const std::string busy = caller.SubmitOk(TestServer::SlowRequest(map_id, 3000, 10)).id();
+  caller.WaitForState(busy, v1::JOB_STATE_RUNNING);
+  TestServer& runner = AddReplica();
+
+  std::string id;
+  {
+    grpc::ClientContext context;
+    auto plan = caller.jobs().Plan(&context, TestServer::SlowRequest(map_id, 3000, 10));
+    v1::JobEvent event;
+    ASSERT_TRUE(plan->Read(&event));
+    id = event.job_id();
+    while (plan->Read(&event) && !event.has_started()) {
+    }
+    runner.WaitForState(id, v1::JOB_STATE_RUNNING);
+    context.TryCancel();
+  }
+  const v1::Job ended = runner.WaitUntilFinal(id);
+  EXPECT_EQ(ended.state(), v1::JOB_STATE_CANCELLED);
+  EXPECT_LT(ended.result().iterations(), 3000);
+  EXPECT_EQ(caller.GetJob(busy).state(), v1::JOB_STATE_RUNNING);  // only the Plan call's job
+
+  v1::CancelJobRequest cancel;
+  cancel.set_id(busy);
+  v1::Job cancelled;
+  grpc::ClientContext context;
+  ASSERT_TRUE(runner.jobs().CancelJob(&context, cancel, &cancelled).ok());
+  EXPECT_EQ(caller.WaitUntilFinal(busy).state(), v1::JOB_STATE_CANCELLED);
 }
 
 v1::Job GetJob(v1::JobService::Stub& jobs, const std::string& id) {
