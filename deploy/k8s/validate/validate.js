@@ -8,6 +8,7 @@ const GROUPS = {
   "v1": "kubernetes-models/v1",
   "apps/v1": "kubernetes-models/apps/v1",
   "policy/v1": "kubernetes-models/policy/v1",
+  "networking.k8s.io/v1": "kubernetes-models/networking.k8s.io/v1",
 };
 
 const docs = yaml.loadAll(fs.readFileSync(0, "utf8")).filter(Boolean);
