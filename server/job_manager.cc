@@ -305,6 +305,13 @@ bool JobManager::Persist(Job& job, const v1::Job& record) {
   const StoredJob stored = ToStored(job.id, record);
   if (job.lease.has_value()) {
     absl::StatusOr<bool> held = shared_.queue->Record(*job.lease, stored);
+    // Redis unreachable for a moment (a failover, a restart): try again before the attempt is
+    // given up, well within the lease.
+    for (absl::Duration pause = absl::Milliseconds(100);
+         !held.ok() && pause < shared_.queue->options().lease / 4; pause *= 2) {
+      absl::SleepFor(pause);
+      held = shared_.queue->Record(*job.lease, stored);
+    }
     if (held.ok() && *held) return true;
     spdlog::warn("job {}: attempt {} is no longer this replica's ({}); it stops here", job.id,
                  job.lease->attempt,
