@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
@@ -46,6 +47,12 @@ class BenchServer {
 };
 
 bool IsFinalJobState(v1::JobState state);
+
+struct ThroughputResult;
+// The time until `jobs` copies of `request`, submitted round-robin to `servers`, are all final
+// (SUCCEEDED or NO_PATH_FOUND; anything else is an error). `workers` is left 0.
+absl::StatusOr<ThroughputResult> TimeJobs(const std::vector<BenchServer*>& servers,
+                                          const v1::PlanRequest& request, int jobs);
 
 // A gRPC status as an absl::Status, prefixed with the call's name.
 absl::Status FromGrpc(const std::string& call, const grpc::Status& status);

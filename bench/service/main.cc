@@ -61,7 +61,7 @@ absl::Status MeasureReplicaCounts(const Options& options, ServiceBenchReport& re
       absl::StrCat("bso (", options.throughput_iterations, " iterations) on circles.json");
   for (int n = 1; n <= options.max_replicas; ++n) {
     std::cerr << "replicas: " << n << "...\n";
-    absl::StatusOr<ReplicasResult> r = MeasureReplicas(plan, options.store, n, options.jobs);
+    absl::StatusOr<ThroughputResult> r = MeasureReplicas(plan, options.store, n, options.jobs);
     if (!r.ok()) return r.status();
     report.replicas.push_back(*r);
   }

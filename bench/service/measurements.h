@@ -68,15 +68,8 @@ absl::StatusOr<StoreLatencyResult> MeasureStoreLatency(const PlanCase& plan,
 
 // 5. `jobs` copies of a plan submitted round-robin to `replicas` servers of 1 worker each on one
 // shared store (redis://...), which run them from its shared queue; the time from the first
-// submission until every job is final.
-struct ReplicasResult {
-  int replicas = 0;
-  int jobs = 0;
-  double seconds = 0;
-  int succeeded = 0;
-  double jobs_per_second() const { return seconds > 0 ? jobs / seconds : 0; }
-};
-absl::StatusOr<ReplicasResult> MeasureReplicas(const PlanCase& plan, const std::string& store,
-                                               int replicas, int jobs);
+// submission until every job is final. `workers` of the result is the number of replicas.
+absl::StatusOr<ThroughputResult> MeasureReplicas(const PlanCase& plan, const std::string& store,
+                                                 int replicas, int jobs);
 
 }  // namespace swarmplan::bench

@@ -123,14 +123,14 @@ void AppendStores(const ServiceBenchReport& report, std::string& md) {
 
 void AppendReplicas(const ServiceBenchReport& report, std::string& md) {
   if (report.replicas.empty()) return;
-  const ReplicasResult& one = report.replicas.front();
+  const ThroughputResult& one = report.replicas.front();
   absl::StrAppend(&md, "## 5. Replicas on one shared queue\n\n", one.jobs, " jobs of ",
                   report.replicas_plan,
                   " submitted round-robin to servers of 1 worker each on one Redis, until all "
                   "are final.\n\n| replicas | seconds | jobs/s | jobs/s over 1 replica |\n"
                   "|---:|---:|---:|---:|\n");
-  for (const ReplicasResult& r : report.replicas) {
-    absl::StrAppend(&md, "| ", r.replicas, " | ", absl::StrFormat("%.3f", r.seconds), " | ",
+  for (const ThroughputResult& r : report.replicas) {
+    absl::StrAppend(&md, "| ", r.workers, " | ", absl::StrFormat("%.3f", r.seconds), " | ",
                     absl::StrFormat("%.2f", r.jobs_per_second()), " | ",
                     Ratio(r.jobs_per_second(), one.jobs_per_second()), " |\n");
   }

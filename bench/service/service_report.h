@@ -21,7 +21,7 @@ struct ServiceBenchReport {
   std::vector<WatcherResult> watched;
   std::vector<StoreLatencyResult> stores;  // with --store only
   std::string replicas_plan;               // with --store only
-  std::vector<ReplicasResult> replicas;    // 1, 2, ... replicas
+  std::vector<ThroughputResult> replicas;  // 1, 2, ... replicas (workers: the replicas)
 };
 
 std::string ServiceReportMarkdown(const ServiceBenchReport& report);
