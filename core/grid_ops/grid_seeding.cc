@@ -16,8 +16,9 @@ std::vector<ParamSpec> GridSeedingParams() {
   return SeedingParams(
       "the population starts from exact seed paths in distinct corridors turned into cell paths, "
       "the paper's operators search from there, moves may take line-of-sight steps, and paths "
-      "are ranked by their any-angle length after line-of-sight shortcutting; the result is never "
-      "longer than the best seed",
+      "are ranked by the request's objective (the length, or the fleet objective when it states "
+      "preferences) of their any-angle path after line-of-sight shortcutting; the result is "
+      "never worse than the best seed",
       "the paper's initialisation and fitness (cell-path length)");
 }
 
@@ -54,14 +55,17 @@ absl::StatusOr<GridSeeds> GridSeeds::Find(const Problem& problem, const GridSpac
                                           GridSearchContext* context) {
   absl::StatusOr<std::vector<SeedPath>> seeds = FindSeedPaths(problem, count, stop);
   if (!seeds.ok()) return seeds.status();
-  GridSeeds out;
+  absl::StatusOr<GridPathCost> cost = GridPathCost::Create(problem, space);
+  if (!cost.ok()) return cost.status();
+  GridSeeds out(*std::move(cost));
   for (const SeedPath& seed : *seeds) {
     std::optional<std::vector<Cell>> cells = SeedCellPath(space, moves, seed.path, context);
     if (!cells) continue;
     out.cell_paths_.push_back(*std::move(cells));
-    if (out.best_path_.empty() || seed.length < out.best_length_) {
+    const double cost_of_seed = out.cost_.Cost(seed.path);
+    if (out.best_path_.empty() || cost_of_seed < out.best_cost_) {
       out.best_path_ = seed.path;
-      out.best_length_ = seed.length;
+      out.best_cost_ = cost_of_seed;
     }
   }
   if (out.cell_paths_.empty()) {
@@ -70,13 +74,13 @@ absl::StatusOr<GridSeeds> GridSeeds::Find(const Problem& problem, const GridSpac
   return out;
 }
 
-bool GridSeeds::SetResult(const GridSpace& space, const std::vector<Cell>& best_cells,
-                          SearchResult& result) const {
-  std::optional<Path> path = AnyAnglePath(space, best_cells);
-  const bool keep_seed = !path || PathLength(*path) >= best_length_;
+bool GridSeeds::SetResult(const std::vector<Cell>& best_cells, SearchResult& result) {
+  std::optional<Path> path = cost_.PathOf(best_cells);
+  const double path_cost = path ? cost_.Cost(*path) : best_cost_;
+  const bool keep_seed = !path || path_cost >= best_cost_;
   result.path = keep_seed ? best_path_ : *std::move(path);
-  result.fitness = PathLength(result.path);
-  result.found = space.PathFree(result.path);
+  result.fitness = keep_seed ? best_cost_ : path_cost;
+  result.found = cost_.space().PathFree(result.path);
   result.seed_path = best_path_;
   return keep_seed;
 }

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "absl/status/statusor.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/grid_moves.h"
+#include "core/grid_ops/grid_path_cost.h"
 #include "core/grid_ops/grid_space.h"
 #include "core/params.h"
 #include "core/planner.h"
@@ -16,7 +18,8 @@ namespace swarmplan {
 
 // How a grid-node planner initialises (parameters `init` and `seeds`, named as for the waypoint
 // planners). init=seeded, the parameters' default: the population starts from the seed paths,
-// the fitness is the any-angle length (AnyAngleLength) and the result is never longer than the
+// the fitness is the request's objective of the any-angle path (GridPathCost: the length, or the
+// fleet objective when the request states preferences) and the result is never worse than the
 // best seed. init=paper: the paper's initialisation and cell-path fitness. A directly
 // constructed planner runs the paper's.
 struct GridSeeding {
@@ -35,12 +38,13 @@ std::optional<std::vector<Cell>> SeedCellPath(const GridSpace& space, GridMoves&
 
 // The seeded initialisation of a grid-node planner (init=seeded): the problem's seed paths
 // (FindSeedPaths, exact optimum first), each as a cell path of the planner's grid space and
-// moves, and the best seed as the incumbent from iteration 0: the result is never longer than
+// moves, the fitness every seeded grid planner ranks its cell paths by (GridPathCost), and the
+// best seed by that fitness as the incumbent from iteration 0: the result is never worse than
 // the best seed.
 class GridSeeds {
  public:
-  // Up to `count` seeds. Errors: FindSeedPaths'; NOT_FOUND when no path exists or no seed can be
-  // turned into a cell path.
+  // Up to `count` seeds. Errors: FindSeedPaths' and GridPathCost's; NOT_FOUND when no path
+  // exists or no seed can be turned into a cell path. `space` must outlive the seeds.
   static absl::StatusOr<GridSeeds> Find(const Problem& problem, const GridSpace& space,
                                         GridMoves& moves, int count, const StopToken& stop,
                                         GridSearchContext* context);
@@ -49,20 +53,24 @@ class GridSeeds {
   const std::vector<std::vector<Cell>>& cell_paths() const { return cell_paths_; }
   // The cell path population member `i` starts from: the seeds in turn.
   const std::vector<Cell>& ForMember(size_t i) const { return cell_paths_[i % cell_paths_.size()]; }
-  double best_length() const { return best_length_; }
-  // The best fitness so far once the best seed counts: min(fitness, best_length()).
-  double Incumbent(double fitness) const { return fitness < best_length_ ? fitness : best_length_; }
+  // The fitness of a cell path: the objective of its any-angle path.
+  double Cost(const std::vector<Cell>& cells) { return cost_(cells); }
+  double best_cost() const { return best_cost_; }
+  // The best fitness so far once the best seed counts: min(fitness, best_cost()).
+  double Incumbent(double fitness) const { return fitness < best_cost_ ? fitness : best_cost_; }
 
-  // The result's path is the shorter of AnyAnglePath(best_cells) and the best seed, its
-  // fitness that path's length, found when it is collision-free; its seed_path the best seed.
+  // The result's path is the better of best_cells' any-angle path and the best seed, its
+  // fitness that path's objective, found when it is collision-free; its seed_path the best seed.
   // True when the seed is kept.
-  bool SetResult(const GridSpace& space, const std::vector<Cell>& best_cells,
-                 SearchResult& result) const;
+  bool SetResult(const std::vector<Cell>& best_cells, SearchResult& result);
 
  private:
+  explicit GridSeeds(GridPathCost cost) : cost_(std::move(cost)) {}
+
+  GridPathCost cost_;
   std::vector<std::vector<Cell>> cell_paths_;
   Path best_path_;
-  double best_length_ = 0.0;
+  double best_cost_ = 0.0;
 };
 
 }  // namespace swarmplan

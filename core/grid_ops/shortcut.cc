@@ -1,28 +1,48 @@
 #include "core/grid_ops/shortcut.h"
 
-#include <limits>
+#include <algorithm>
+#include <cmath>
 
 #include "core/grid_ops/collinear.h"
-#include "core/path_metrics.h"
 
 namespace swarmplan {
 namespace {
 
-// Greedy string pulling of ShortcutPath, without the collinear pruning.
-std::optional<Path> PullString(const GridSpace& space, const Path& path) {
+// Greedy string pulling: from each kept point the path goes straight to the last later point
+// that `visible(anchor, j)` accepts; `visible` is only asked after SegmentFree holds. Without
+// the collinear pruning.
+template <typename Visible>
+std::optional<Path> PullString(const GridSpace& space, const Path& path, Visible visible) {
   if (path.size() < 2) return path;
   if (!space.SegmentFree(path[0], path[1])) return std::nullopt;
   Path out{path.front()};
   size_t anchor = 0;
   // Invariant: the segment from path[anchor] to path[i] is collision-free.
   for (size_t i = 1; i + 1 < path.size(); ++i) {
-    if (space.SegmentFree(path[anchor], path[i + 1])) continue;
+    if (space.SegmentFree(path[anchor], path[i + 1]) && visible(anchor, i + 1)) continue;
     if (!space.SegmentFree(path[i], path[i + 1])) return std::nullopt;
     out.push_back(path[i]);
     anchor = i;
   }
   out.push_back(path.back());
   return out;
+}
+
+std::optional<Path> PullString(const GridSpace& space, const Path& path) {
+  return PullString(space, path, [](size_t, size_t) { return true; });
+}
+
+// Whether the field's bilinear distance stays at least `floor` at points at most half a field
+// cell apart on the segment a-b, both ends included.
+bool SegmentKeeps(const DistanceField& field, const Point3& a, const Point3& b, double floor) {
+  const Point3 step = b - a;
+  const int pieces =
+      std::max(1, static_cast<int>(std::ceil(2.0 * step.head<2>().norm() / field.cell_size())));
+  for (int k = 0; k <= pieces; ++k) {
+    const Point3 p = a + step * (static_cast<double>(k) / pieces);
+    if (field.Bilinear(p.x(), p.y()) < floor) return false;
+  }
+  return true;
 }
 
 // Moves each interior point to the corner of its cell that shortens the path most while both
@@ -61,14 +81,32 @@ std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path) {
   return PruneCollinear(*pulled);
 }
 
+std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path& path,
+                                             const DistanceField& field,
+                                             double preferred_clearance) {
+  std::vector<double> vertex_clearance(path.size());
+  for (size_t i = 0; i < path.size(); ++i) {
+    vertex_clearance[i] = std::min(preferred_clearance, field.Bilinear(path[i].x(), path[i].y()));
+  }
+  // The nearest vertex of the stretch anchor..j, extended as j grows from the anchor.
+  size_t stretch_anchor = 0, stretch_end = 0;
+  double stretch_floor = path.empty() ? 0.0 : vertex_clearance[0];
+  std::optional<Path> pulled = PullString(space, path, [&](size_t anchor, size_t j) {
+    if (anchor != stretch_anchor) {
+      stretch_anchor = stretch_end = anchor;
+      stretch_floor = vertex_clearance[anchor];
+    }
+    while (stretch_end < j)
+      stretch_floor = std::min(stretch_floor, vertex_clearance[++stretch_end]);
+    return SegmentKeeps(field, path[anchor], path[j], stretch_floor);
+  });
+  if (!pulled) return std::nullopt;
+  return PruneCollinear(*pulled);
+}
+
 std::optional<Path> AnyAnglePath(const GridSpace& space, const std::vector<Cell>& cells) {
   if (cells.empty()) return std::nullopt;
   return ShortcutPath(space, space.WorldPath(cells));
-}
-
-double AnyAngleLength(const GridSpace& space, const std::vector<Cell>& cells) {
-  const std::optional<Path> path = AnyAnglePath(space, cells);
-  return path ? PathLength(*path) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace swarmplan

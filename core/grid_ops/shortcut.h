@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/grid_ops/grid_space.h"
+#include "core/map/distance_field.h"
 #include "core/map/point.h"
 
 namespace swarmplan {
@@ -18,13 +19,19 @@ namespace swarmplan {
 // start and goal are kept. nullopt when a segment of `path` itself is not collision-free.
 std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path);
 
+// The shortening for a fleet objective with a preferred clearance: the same string pulling, but
+// a straight segment replaces a stretch of `path` only when it stays, by the field's bilinear
+// distance, at least as far from the obstacles as the nearer of `preferred_clearance` and the
+// closest vertex of the stretch; no corner pull. So a path that keeps away from the walls is
+// straightened without being pulled back against them. Never longer than `path`; nullopt as
+// ShortcutPath.
+std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path& path,
+                                             const DistanceField& field,
+                                             double preferred_clearance);
+
 // ShortcutPath of the cell path's world path (GridSpace::WorldPath); consecutive cells need not
 // be neighbours (a line-of-sight move joins two cell centres). nullopt when `cells` is empty or
 // its world path is not collision-free.
 std::optional<Path> AnyAnglePath(const GridSpace& space, const std::vector<Cell>& cells);
-
-// Length of AnyAnglePath(space, cells): the fitness of a grid planner with init=seeded;
-// infinity when there is no such path.
-double AnyAngleLength(const GridSpace& space, const std::vector<Cell>& cells);
 
 }  // namespace swarmplan

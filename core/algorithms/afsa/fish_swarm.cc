@@ -50,7 +50,7 @@ class FishSwarmSearch {
       if (absl::IsNotFound(seeds.status())) return result;  // start and goal not connected
       if (!seeds.ok()) return seeds.status();
       seeds_ = *std::move(seeds);
-      best_fitness_ = seeds_->best_length();
+      best_fitness_ = seeds_->best_cost();
       const size_t per_seed =
           (fish_.size() + seeds_->cell_paths().size() - 1) / seeds_->cell_paths().size();
       for (size_t i = 0; i < fish_.size(); ++i) {
@@ -85,7 +85,7 @@ class FishSwarmSearch {
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
     if (seeds_) {
-      if (seeds_->SetResult(space_, best_cells_, result)) result.best_iteration = 0;
+      if (seeds_->SetResult(best_cells_, result)) result.best_iteration = 0;
       return result;
     }
     SetGridPath(space_, best_cells_, best_fitness_, result);
@@ -189,16 +189,16 @@ class FishSwarmSearch {
     return length;
   }
 
-  // init=seeded: the trail is ranked by its any-angle length against the best arrival; a fish
+  // init=seeded: the trail is ranked by GridSeeds::Cost against the best arrival; a fish
   // that records a solution restarts from a random place on a random seed.
   double ArriveSeeded(Fish& fish, std::vector<Cell> cells, int iteration) {
-    const double length = AnyAngleLength(space_, cells);
+    const double cost = seeds_->Cost(cells);
     if (p_.feasible_solutions || best_cells_.empty()) {
-      if (best_cells_.empty() || length < best_arrival_ - 1e-12) {
+      if (best_cells_.empty() || cost < best_arrival_ - 1e-12) {
         best_cells_ = std::move(cells);
-        best_arrival_ = length;
+        best_arrival_ = cost;
       }
-      Offer(length, iteration);
+      Offer(cost, iteration);
     }
     if (p_.feasible_solutions) {
       const int64_t count = static_cast<int64_t>(seeds_->cell_paths().size());
@@ -207,7 +207,7 @@ class FishSwarmSearch {
       PlaceOnSeed(fish, seed,
                   static_cast<size_t>(rng_.UniformInt(0, static_cast<int64_t>(seed.size()) - 1)));
     }
-    return length;
+    return cost;
   }
 
   // Follow / swarm: the better of the best neighbour and the neighbours' centre, when it beats
@@ -262,7 +262,7 @@ class FishSwarmSearch {
   double scale_ = 1.0;              // of visual and steps
   std::vector<Fish> fish_;
   std::vector<Cell> best_cells_;
-  double best_arrival_ = 0.0;  // init=seeded: AnyAngleLength(best_cells_)
+  double best_arrival_ = 0.0;  // init=seeded: seeds_->Cost(best_cells_)
   double best_fitness_ = 0.0;
   int best_iteration_ = 0;
   int64_t evaluations_ = 0;
@@ -289,8 +289,9 @@ PlannerInfo FishInfo(FishSwarmParams::Variant variant, std::string id, std::stri
       std::move(description) +
       " init=seeded (the default): fish start spread along the seed paths' cells, visual and "
       "steps scale with the grid (paper's values on a 20 x 20 grid), a fish swims straight to a "
-      "target in line of sight, trails are ranked by their any-angle length, and the result is "
-      "never longer than the best seed.";
+      "target in line of sight, trails are ranked by the request's objective (the length, or the "
+      "fleet objective) of their any-angle paths, and the result is never worse than the best "
+      "seed.";
   info.seed_paper = citations::kIdafsa;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};

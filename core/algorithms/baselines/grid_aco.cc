@@ -32,7 +32,7 @@ class GridAcoSearch {
 
   absl::StatusOr<SearchResult> Run(const StopToken& stop, Observer& observer) {
     SearchResult result;
-    best_length_ = unreached_;
+    best_cost_ = unreached_;
     double q = p_.q;
     if (p_.seeding.seeded) {
       absl::StatusOr<GridSeeds> seeds =
@@ -40,19 +40,19 @@ class GridAcoSearch {
       if (absl::IsNotFound(seeds.status())) return result;  // start and goal not connected
       if (!seeds.ok()) return seeds.status();
       seeds_ = *std::move(seeds);
-      q *= seeds_->best_length();
+      q *= seeds_->best_cost();
       for (const std::vector<Cell>& cells : seeds_->cell_paths()) {
-        const double length = AnyAngleLength(space_, cells);
-        Deposit(cells, q / length);
-        if (length < best_length_ - 1e-12) {
-          best_length_ = length;
+        const double cost = seeds_->Cost(cells);
+        Deposit(cells, q / cost);
+        if (cost < best_cost_ - 1e-12) {
+          best_cost_ = cost;
           best_cells_ = cells;
         }
       }
     }
     ConvergenceLog log(observer);
     int iteration = 0;
-    std::vector<std::pair<std::vector<int>, double>> arrivals;  // move indices, length
+    std::vector<std::pair<std::vector<int>, double>> arrivals;  // move indices, cost
     for (; iteration < p_.iterations; ++iteration) {
       if (StopReason why = stop.Check(iteration); why != StopReason::kNone) {
         result.stop_reason = why;
@@ -65,11 +65,11 @@ class GridAcoSearch {
         std::vector<int> edges;
         ++evaluations_;
         if (Walk(cells, edges)) {
-          const double length = seeds_ ? AnyAngleLength(space_, cells) : space_.PathLength(cells);
-          sum += length;
-          arrivals.push_back({std::move(edges), length});
-          if (length < best_length_ - 1e-12) {
-            best_length_ = length;
+          const double cost = seeds_ ? seeds_->Cost(cells) : space_.PathLength(cells);
+          sum += cost;
+          arrivals.push_back({std::move(edges), cost});
+          if (cost < best_cost_ - 1e-12) {
+            best_cost_ = cost;
             best_cells_ = cells;
             result.best_iteration = iteration;
           }
@@ -78,18 +78,18 @@ class GridAcoSearch {
         }
       }
       for (double& t : tau_) t *= 1.0 - p_.rho;
-      for (const auto& [edges, length] : arrivals) {
-        for (int e : edges) tau_[e] += q / length;
+      for (const auto& [edges, cost] : arrivals) {
+        for (int e : edges) tau_[e] += q / cost;
       }
-      log.Record(iteration, seeds_ ? seeds_->Incumbent(best_length_) : best_length_,
+      log.Record(iteration, seeds_ ? seeds_->Incumbent(best_cost_) : best_cost_,
                  sum / std::max(1, p_.ants), evaluations_, !best_cells_.empty());
     }
     result.iterations = iteration;
     result.evaluations = evaluations_;
     result.convergence = log.Take();
     if (!seeds_) {
-      SetGridPath(space_, best_cells_, best_length_, result);
-    } else if (seeds_->SetResult(space_, best_cells_, result)) {
+      SetGridPath(space_, best_cells_, best_cost_, result);
+    } else if (seeds_->SetResult(best_cells_, result)) {
       result.best_iteration = 0;
     }
     return result;
@@ -153,7 +153,7 @@ class GridAcoSearch {
   std::vector<uint32_t> visited_;
   uint32_t stamp_ = 0;
   double unreached_ = 0.0;
-  double best_length_ = 0.0;
+  double best_cost_ = 0.0;
   std::vector<Cell> best_cells_;
   int64_t evaluations_ = 0;
 };
@@ -209,8 +209,9 @@ PlannerInfo GridAcoInfo() {
       "α = 1, β = 7, ρ = 0.3, Q = 1, 50 ants. Ours: pheromone on directed moves, τ0 = 1, 100 "
       "iterations; before any ant arrives the streamed fitness is a bound on path lengths. "
       "init=seeded (the default): the seed paths' cells are iteration 0's arrivals, Q is "
-      "scaled by the best seed's length, paths are ranked by their any-angle length, never "
-      "longer than the best seed.";
+      "scaled by the best seed's objective, paths are ranked by the request's objective (the "
+      "length, or the fleet objective) of their any-angle paths, never worse than the best "
+      "seed.";
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = GridAcoParams::Specs();

@@ -16,7 +16,7 @@ namespace {
 
 struct Individual {
   std::vector<Cell> cells;
-  double length = 0.0;
+  double cost = 0.0;  // the cell path length, or with init=seeded GridSeeds::Cost
 };
 
 class GridGaSearch {
@@ -63,7 +63,7 @@ class GridGaSearch {
         break;
       }
       std::vector<double> weights;
-      for (const Individual& ind : pop) weights.push_back(1.0 / std::max(ind.length, 1e-12));
+      for (const Individual& ind : pop) weights.push_back(1.0 / std::max(ind.cost, 1e-12));
       std::vector<Individual> next{best_};  // elitism
       while (static_cast<int>(next.size()) < p_.population) {
         Individual a = pop[RouletteSelect(weights, rng_)];
@@ -77,17 +77,17 @@ class GridGaSearch {
       }
       pop = std::move(next);
       double sum = 0.0;
-      for (const Individual& ind : pop) sum += ind.length;
-      log.Record(generation, seeds_ ? seeds_->Incumbent(best_.length) : best_.length,
-                 sum / pop.size(), evaluations_, true);
+      for (const Individual& ind : pop) sum += ind.cost;
+      log.Record(generation, seeds_ ? seeds_->Incumbent(best_.cost) : best_.cost, sum / pop.size(),
+                 evaluations_, true);
     }
     result.iterations = generation;
     result.evaluations = evaluations_;
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
     if (!seeds_) {
-      SetGridPath(space_, best_.cells, best_.length, result);
-    } else if (seeds_->SetResult(space_, best_.cells, result)) {
+      SetGridPath(space_, best_.cells, best_.cost, result);
+    } else if (seeds_->SetResult(best_.cells, result)) {
       result.best_iteration = 0;
     }
     return result;
@@ -98,8 +98,8 @@ class GridGaSearch {
 
   void Evaluate(Individual& ind, int generation) {
     ++evaluations_;
-    ind.length = seeds_ ? AnyAngleLength(space_, ind.cells) : space_.PathLength(ind.cells);
-    if (best_.cells.empty() || ind.length < best_.length - 1e-12) {
+    ind.cost = seeds_ ? seeds_->Cost(ind.cells) : space_.PathLength(ind.cells);
+    if (best_.cells.empty() || ind.cost < best_.cost - 1e-12) {
       best_ = ind;
       best_iteration_ = generation;
     }
@@ -217,7 +217,8 @@ PlannerInfo GridGaInfo() {
       "1/length, crossover at a shared cell, mutation re-routing a random sub-path through a "
       "nearby random cell with A*, loops removed, the best kept. Every parameter is ours: the "
       "papers do not publish theirs. init=seeded (the default): the initial paths are the seed "
-      "paths' cells, ranked by their any-angle length, never longer than the best seed.";
+      "paths' cells, ranked by the request's objective (the length, or the fleet objective) of "
+      "their any-angle paths, never worse than the best seed.";
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};
   info.params = GridGaParams::Specs();

@@ -103,7 +103,7 @@ class AsBfoSearch {
     result.convergence = log.Take();
     if (!seeds_) {
       SetGridPath(space_, best_.cells, best_.cost, result);
-    } else if (seeds_->SetResult(space_, best_.cells, result)) {
+    } else if (seeds_->SetResult(best_.cells, result)) {
       result.best_iteration = 0;
     }
     return result;
@@ -115,7 +115,7 @@ class AsBfoSearch {
 
   double Evaluate(const std::vector<Cell>& cells) {
     ++evaluations_;
-    return seeds_ ? AnyAngleLength(space_, cells) : space_.PathLength(cells);
+    return seeds_ ? seeds_->Cost(cells) : space_.PathLength(cells);
   }
 
   void Offer(const Bacterium& b, int iteration) {
@@ -279,7 +279,8 @@ PlannerInfo AsBfoInfo() {
       "joined by A*, Ns = 4, Ped = 0.25, tumbles kept even when worse (classic BFO), no "
       "cell-to-cell term, shape worlds rasterised at `resolution`. init=seeded (the default): "
       "bacteria start from the seed paths' cells and disperse back to them, health is the "
-      "any-angle length, and the result is never longer than the best seed.";
+      "request's objective (the length, or the fleet objective) of the any-angle path, and the "
+      "result is never worse than the best seed.";
   info.seed_paper = citations::kAsBfo;
   info.encoding = Encoding::kGridNodes;
   info.map_kinds = {MapKind::kOccupancyGrid, MapKind::kShapeWorld};

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "core/fitness/fitness_engine.h"
+#include "core/grid_ops/grid_space.h"
+#include "core/map/point.h"
+#include "core/problem.h"
+
+namespace swarmplan {
+
+// The fitness of a grid-node planner with init=seeded, one definition for all of them: a cell
+// path is read as the any-angle path it stands for and ranked by the problem's fleet objective
+// (length, plus the shortfall below the preferred clearance, plus the curvature above
+// 1 / turning radius, FitnessEngine::PathTerms). Without preferences the objective is the
+// length, and the any-angle path is AnyAnglePath's (pulled taut against the corners, so the
+// exact optimum is reachable). With a preferred clearance, ShortcutKeepingClearance straightens
+// the path without pulling it nearer the walls, so a path the swarm moved away from them keeps
+// the clearance it gained.
+class GridPathCost {
+ public:
+  static absl::StatusOr<GridPathCost> Create(const Problem& problem, const GridSpace& space);
+
+  // The any-angle path of `cells`; nullopt when its world path is not collision-free.
+  std::optional<Path> PathOf(const std::vector<Cell>& cells) const;
+  // The objective of a path of the problem (a seed, or PathOf's).
+  double Cost(const Path& path);
+  // Cost(PathOf(cells)); infinity without such a path.
+  double operator()(const std::vector<Cell>& cells);
+  const GridSpace& space() const { return *space_; }
+
+ private:
+  GridPathCost(const GridSpace& space, double preferred_clearance,
+               std::unique_ptr<FitnessEngine> fleet);
+
+  const GridSpace* space_;
+  double preferred_clearance_;
+  std::unique_ptr<FitnessEngine> fleet_;  // null when the objective is the length
+};
+
+}  // namespace swarmplan
