@@ -128,12 +128,14 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
   result.smoothing = request.smoothing.empty() ? "none" : request.smoothing;
 
   const Map& map = *problem.map;
+  bool within_turning_radius = true;
   if (!result.raw_path.empty()) {
     absl::StatusOr<SmoothingResult> smoothed = Smooth(
         result.smoothing, map, result.raw_path, problem.clearance, problem.fleet.turning_radius);
     if (!smoothed.ok()) return smoothed.status();
     result.smoothed_path = std::move(smoothed->path);
     result.smoothing_collision_free = smoothed->collision_free;
+    within_turning_radius = smoothed->within_turning_radius;
   }
   if (!map.is_3d() && result.found) {
     const Path& final_path =
@@ -151,9 +153,12 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
     if (!terms.ok()) return terms.status();
     result.seed_objective = *terms;
     // A seeded plan is never worse than its best seed: when the seed, after the same smoothing,
-    // is better by the objective than the search's path after it, the seed is the result.
+    // is better by the objective than the search's path after it, or keeps the clearance and
+    // the turning radius after it where the search's path does not, the seed is the result.
+    const bool seed_meets = seed->collision_free && seed->within_turning_radius;
+    const bool path_meets = result.smoothing_collision_free && within_turning_radius;
     if (result.found && result.objective && seed->collision_free &&
-        terms->Total() < result.objective->Total()) {
+        (seed_meets != path_meets ? seed_meets : terms->Total() < result.objective->Total())) {
       absl::StatusOr<FleetTerms> raw = EvaluateFleetObjective(problem, search->seed_path);
       if (!raw.ok()) return raw.status();
       result.raw_path = search->seed_path;

@@ -45,8 +45,9 @@ struct PlanResult {
   // On 2D maps, each term of the problem's fleet objective for the final path (the smoothed
   // one, or the raw one when smoothing lost the clearance), and for the best seed path the
   // planner started from after the same smoothing, when it had one. When that seed is better by
-  // the objective than the planner's path after the smoothing, the seed is the result (raw and
-  // smoothed path, its objective as `fitness`, best_iteration 0).
+  // the objective than the planner's path after the smoothing, or when the smoothing keeps the
+  // seed clear and within the turning radius but not the planner's path, the seed is the
+  // result (raw and smoothed path, its objective as `fitness`, best_iteration 0).
   std::optional<FleetTerms> objective;
   std::optional<FleetTerms> seed_objective;
   // The exact optimum of the problem and the final path's cost over the optimum's (PlanCost:

@@ -59,7 +59,10 @@ absl::StatusOr<SmoothingResult> Smooth(const std::string& method, const Map& map
     options.turning_radius = turning_radius > 0
                                  ? turning_radius
                                  : DefaultBezierOptions(map, clearance).min_turning_radius;
-    result.path = SmoothToTurningRadius(raw, options, *MakeCollisionChecker(map)).path;
+    BoundedCurvatureResult bounded =
+        SmoothToTurningRadius(raw, options, *MakeCollisionChecker(map));
+    result.path = std::move(bounded.path);
+    result.within_turning_radius = bounded.corners_over == 0;
   } else {
     return absl::InvalidArgumentError(
         absl::StrCat("smoothing: unknown method '", method,

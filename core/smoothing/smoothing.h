@@ -12,6 +12,9 @@ namespace swarmplan {
 struct SmoothingResult {
   Path path;
   bool collision_free = true;  // the smoothed path keeps the clearance
+  // "bounded-curvature": every corner got a curve within 1 / turning radius (none had to turn
+  // tighter for lack of room or clearance); true for the other methods.
+  bool within_turning_radius = true;
 };
 
 // The smoothing methods a request may name ("none" always among them).

@@ -125,6 +125,14 @@ TEST(BoundedCurvatureTest, ReportsCornersWithoutRoomInsteadOfHidingThem) {
   EXPECT_TRUE(r.collision_free);
   EXPECT_GT(r.corners_over, 0);
   EXPECT_GT(r.max_curvature, 1.0 / 5.0);
+  // Smooth says so too, and says the opposite where the radius fits.
+  absl::StatusOr<SmoothingResult> hairpin = Smooth("bounded-curvature", *map, raw, 0.0, 5.0);
+  ASSERT_TRUE(hairpin.ok()) << hairpin.status();
+  EXPECT_FALSE(hairpin->within_turning_radius);
+  const Path corner{{2, 2, 0}, {30, 2, 0}, {30, 25, 0}};
+  absl::StatusOr<SmoothingResult> wide = Smooth("bounded-curvature", *map, corner, 0.0, 5.0);
+  ASSERT_TRUE(wide.ok()) << wide.status();
+  EXPECT_TRUE(wide->within_turning_radius);
 }
 
 TEST(BoundedCurvatureTest, IsTheSmoothingMethodThatTakesTheTurningRadius) {
