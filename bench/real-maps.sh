@@ -11,6 +11,8 @@
 #           how many of the three paths lie in distinct corridors.
 # Writes OUT_DIR/{length,paper,fleet,alternatives}-MAP.csv; prints the report's tables (stdout).
 #
+# With PLANNER_SET=grid the same runs and tables for the six grid-node planners.
+#
 # Usage: [MODES="length paper fleet alternatives"] bench/real-maps.sh [BUILD_DIR] [OUT_DIR]
 # One run after another on one core, about 35 minutes (two MODES side by side: about 18);
 # MODES=none prints the tables of the CSVs already in OUT_DIR.
@@ -62,10 +64,10 @@ for q in "${POLYGON_QUERIES[@]}"; do
   m=$world run_modes
 done
 
-python3 - "$OUT" "${MAPS[@]}" parking1 parking3 warehouse warehouse2 <<'PY'
+PLANNER_NAMES="${PLANNER_NAMES[*]}" python3 - "$OUT" "${MAPS[@]}" parking1 parking3 warehouse warehouse2 <<'PY'
 import csv, os, statistics, sys
 out, maps = sys.argv[1], sys.argv[2:]
-planners = ["bso", "aem-bso", "aem-bso-linear", "pso", "ba"]
+planners = os.environ["PLANNER_NAMES"].split()
 
 def rows(kind, m):
     path = os.path.join(out, f"{kind}-{m}.csv")
