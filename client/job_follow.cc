@@ -184,6 +184,13 @@ void PrintJob(const v1::Job& job) {
     rows.push_back(
         {"iterations", absl::StrCat(result.iterations(), " (best at ", result.best_iteration(),
                                     "), ", result.evaluations(), " evaluations")});
+    if (result.has_timed_path()) {
+      const v1::VehicleLimits& vehicle = request.vehicle();
+      rows.push_back(
+          {"duration", absl::StrCat(FormatNumber(result.timed_path().duration()), " s at most ",
+                                    FormatNumber(vehicle.max_speed()), " units/s, ",
+                                    FormatNumber(vehicle.max_acceleration()), " units/s^2")});
+    }
     rows.push_back({"stop reason", result.stop_reason()});
     rows.push_back({"time", absl::StrCat(FormatDuration(result.wall_time()), " wall, ",
                                          FormatDuration(result.cpu_time()), " cpu")});

@@ -26,6 +26,9 @@ struct PlanOptions {
   double clearance = 0.0;
   double preferred_clearance = 0.0;
   double turning_radius = 0.0;
+  double max_speed = 0.0;
+  double max_acceleration = 0.0;
+  double max_yaw_rate = 0.0;
   int alternatives = 0;
   int max_iterations = 0;
   std::string time_budget;
@@ -87,6 +90,11 @@ absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options,
   }
   if (options.turning_radius > 0) {
     request.mutable_preferences()->set_turning_radius(options.turning_radius);
+  }
+  if (options.max_speed > 0 || options.max_acceleration > 0 || options.max_yaw_rate > 0) {
+    request.mutable_vehicle()->set_max_speed(options.max_speed);
+    request.mutable_vehicle()->set_max_acceleration(options.max_acceleration);
+    request.mutable_vehicle()->set_max_yaw_rate(options.max_yaw_rate);
   }
   request.set_alternatives(options.alternatives);
   request.mutable_limits()->set_max_iterations(options.max_iterations);
@@ -182,6 +190,20 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
   command
       ->add_option("--turning-radius", options->turning_radius,
                    "Smallest turning radius of the robot (fleet objective); 0: none")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--max-speed", options->max_speed,
+                   "The vehicle's top speed (map units/s): the result carries the path timed "
+                   "for it; 0: not timed")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--max-acceleration", options->max_acceleration,
+                   "The vehicle's largest acceleration along and across the path (map "
+                   "units/s^2); required with --max-speed")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--max-yaw-rate", options->max_yaw_rate,
+                   "The vehicle's largest yaw rate (rad/s); 0: no limit")
       ->check(CLI::NonNegativeNumber);
   command
       ->add_option("--alternatives", options->alternatives,

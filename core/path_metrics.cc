@@ -1,5 +1,6 @@
 #include "core/path_metrics.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,6 +24,21 @@ Path WithoutRepeats(const Path& path) {
   return out;
 }
 
+struct Turn {
+  double sine = 0.0;  // |u x w| / (|u| |w|), u = b - a, w = c - b
+  double angle = 0.0;
+};
+
+// The turn at b of a-b-c; none when a point repeats its neighbour.
+Turn TurnAt(const Point3& a, const Point3& b, const Point3& c) {
+  const Point3 u = b - a;
+  const Point3 w = c - b;
+  const double norms = u.norm() * w.norm();
+  if (norms == 0.0) return {};
+  const double cross = u.cross(w).norm();
+  return {cross / norms, std::atan2(cross, u.dot(w))};
+}
+
 }  // namespace
 
 double PathLength(const Path& path) {
@@ -31,28 +47,26 @@ double PathLength(const Path& path) {
   return length;
 }
 
-// Curvature at an interior vertex b between a and c is that of the circle through a, b and
-// c: 4 * area / (|ab| |bc| |ca|) = 2 sin(turn) / |ca|. A reversal (turn of pi) has infinite
-// curvature.
+double DiscreteCurvature(const Point3& a, const Point3& b, const Point3& c) {
+  const Turn turn = TurnAt(a, b, c);
+  if (turn.angle == 0.0) return 0.0;
+  const double chord = (c - a).norm();
+  if (turn.angle >= std::numbers::pi || chord == 0.0) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return 2.0 * turn.sine / chord;
+}
+
 PathTurns MeasureTurns(const Path& path) {
   PathTurns turns;
   const Path v = WithoutRepeats(path);
   for (size_t i = 1; i + 1 < v.size(); ++i) {
-    const Point3 u = v[i] - v[i - 1];
-    const Point3 w = v[i + 1] - v[i];
-    const double sine =  // |u x w|
-        Point3(u.y() * w.z() - u.z() * w.y(), u.z() * w.x() - u.x() * w.z(),
-               u.x() * w.y() - u.y() * w.x())
-            .norm();
-    const double turn = std::atan2(sine, u.dot(w));
-    if (turn <= kTurnThreshold) continue;
+    if (TurnAt(v[i - 1], v[i], v[i + 1]).angle <= kTurnThreshold) continue;
     ++turns.turning_points;
-    turns.longest_turning_segment = std::max({turns.longest_turning_segment, u.norm(), w.norm()});
-    const double chord = (v[i + 1] - v[i - 1]).norm();
-    const double curvature = (turn >= std::numbers::pi || chord == 0.0)
-                                 ? std::numeric_limits<double>::infinity()
-                                 : 2.0 * sine / (u.norm() * w.norm()) / chord;
-    turns.max_curvature = std::max(turns.max_curvature, curvature);
+    turns.longest_turning_segment = std::max(
+        {turns.longest_turning_segment, (v[i] - v[i - 1]).norm(), (v[i + 1] - v[i]).norm()});
+    turns.max_curvature =
+        std::max(turns.max_curvature, DiscreteCurvature(v[i - 1], v[i], v[i + 1]));
   }
   return turns;
 }

@@ -21,6 +21,11 @@ PathMetrics EvaluatePath(const Map& map, const Path& path, double clearance);
 // Polyline length.
 double PathLength(const Path& path);
 
+// The curvature at b of the polyline a-b-c: that of the circle through the three points,
+// 2 sin(turn) / |ca|; 0 when they are collinear or a point repeats its neighbour, infinite at a
+// reversal (a turn of pi).
+double DiscreteCurvature(const Point3& a, const Point3& b, const Point3& c);
+
 // The turns of a polyline: interior vertices where the heading changes, the largest discrete
 // curvature among them (PathMetrics's), and the longest segment beside one of them (a polyline
 // samples a curve of that curvature only where this is short against the curve's radius).

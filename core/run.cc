@@ -63,6 +63,7 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
     return absl::InvalidArgumentError("clearance: must be a finite number >= 0");
   }
   if (absl::Status s = ValidateFleetObjective(problem.fleet); !s.ok()) return s;
+  if (absl::Status s = ValidateVehicleLimits(request.vehicle); !s.ok()) return s;
   if (problem.alternatives < 0 || problem.alternatives > kMaxAlternatives) {
     return absl::InvalidArgumentError(absl::StrCat(
         "alternatives: must be in [0, ", kMaxAlternatives, "], got ", problem.alternatives));
@@ -174,6 +175,10 @@ absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& 
     out.metrics = EvaluatePath(map, alternative.path, problem.clearance);
     out.path = std::move(alternative.path);
     out.fitness = alternative.fitness;
+  }
+  if (request.vehicle.timed() && result.found) {
+    result.timed_path = TimePath(
+        result.smoothing_collision_free ? result.smoothed_path : result.raw_path, request.vehicle);
   }
   result.raw_metrics = EvaluatePath(map, result.raw_path, problem.clearance);
   result.smoothed_metrics = EvaluatePath(map, result.smoothed_path, problem.clearance);

@@ -10,16 +10,19 @@
 #include "core/path_metrics.h"
 #include "core/planner.h"
 #include "core/registry.h"
+#include "core/timing/timed_path.h"
 
 namespace swarmplan {
 
 // A plan as a client asks for it: the algorithm by id, its raw parameters, the problem (a seed
-// of 0 means "pick one and report it") and the smoothing to apply to the raw path.
+// of 0 means "pick one and report it"), the smoothing to apply to the raw path and the vehicle
+// whose limits time the final path.
 struct PlanRequest {
   std::string algorithm;
   ParamValues params;
   Problem problem;
   std::string smoothing = "none";  // "none", or a method of SmoothingMethods()
+  VehicleLimits vehicle;           // timed() or not: whether the result has a timed_path
 };
 
 // Everything a plan returns, the same whatever the planner.
@@ -50,6 +53,9 @@ struct PlanResult {
   // result (raw and smoothed path, its objective as `fitness`, best_iteration 0).
   std::optional<FleetTerms> objective;
   std::optional<FleetTerms> seed_objective;
+  // With a timed vehicle and a path: the final path (the smoothed one, or the raw one when
+  // smoothing lost the clearance) timed within the vehicle's limits (TimePath).
+  std::optional<TimedPath> timed_path;
   // The exact optimum of the problem and the final path's cost over the optimum's (PlanCost:
   // the length on 2D maps; of the smoothed path, or of the raw one when smoothing lost the
   // clearance; 0 when the optimum is not known or no path was found). RunPlan leaves them

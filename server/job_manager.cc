@@ -138,6 +138,7 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   plan.algorithm = request.algorithm();
   plan.params = std::move(*params);
   plan.smoothing = request.smoothing().empty() ? "none" : request.smoothing();
+  plan.vehicle = FromProto(request.vehicle());
   plan.problem.map = (*map)->map;
   plan.problem.start = FromProto(request.start());
   plan.problem.goal = FromProto(request.goal());

@@ -144,6 +144,14 @@ v1::ObjectiveTerms ToProto(const FleetTerms& t) {
 
 }  // namespace
 
+VehicleLimits FromProto(const v1::VehicleLimits& v) {
+  VehicleLimits vehicle;
+  vehicle.max_speed = v.max_speed();
+  vehicle.max_acceleration = v.max_acceleration();
+  vehicle.max_yaw_rate = v.max_yaw_rate();
+  return vehicle;
+}
+
 v1::PlanResult ToProto(const PlanResult& r) {
   v1::PlanResult out;
   out.set_algorithm(r.algorithm);
@@ -183,6 +191,16 @@ v1::PlanResult ToProto(const PlanResult& r) {
   }
   if (r.objective) *out.mutable_objective() = ToProto(*r.objective);
   if (r.seed_objective) *out.mutable_seed_objective() = ToProto(*r.seed_objective);
+  if (r.timed_path) {
+    v1::TimedPath* timed = out.mutable_timed_path();
+    for (const TimedPoint& p : r.timed_path->points) {
+      v1::TimedPoint* point = timed->add_points();
+      *point->mutable_point() = ToProto(p.point);
+      point->set_time(p.time);
+      point->set_speed(p.speed);
+    }
+    timed->set_duration(r.timed_path->duration);
+  }
   return out;
 }
 

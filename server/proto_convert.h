@@ -22,6 +22,7 @@ v1::Point ToProto(const Point3& p);
 Point3 FromProto(const v1::Point& p);
 // Unset weights are 1, as the .proto says.
 FleetObjective FromProto(const v1::PathPreferences& p);
+VehicleLimits FromProto(const v1::VehicleLimits& v);
 v1::MapKind ToProto(MapKind kind);
 
 v1::ParamValue ToProto(const ParamValue& value);

@@ -213,6 +213,23 @@ def main():
                   fleet.get("seed_objective", {}).get("total", 0.0) + 1e-9,
                   "on the warehouse the fleet plan is no worse by its objective than its best seed")
 
+        # A timed path: the smoothed path timed for a vehicle, its duration printed.
+        timed_args = ("plan", grid_id, "--start", start, "--goal", goal, "--algorithm",
+                      "theta-star", "--smoothing", "bounded-curvature", "--turning-radius", "2",
+                      "--max-speed", "1.5", "--max-acceleration", "0.5", "--max-yaw-rate", "1")
+        timed = cli.json(*timed_args).get("result", {})
+        points = timed.get("timed_path", {}).get("points", [])
+        duration = timed.get("timed_path", {}).get("duration", 0.0)
+        cli.check(len(points) == len(timed.get("smoothed_path", [])) and points and
+                  points[-1].get("time") == duration and
+                  duration > timed.get("smoothed_metrics", {}).get("length", 1e9) / 1.5,
+                  "plan --max-speed returns the smoothed path timed, slower than its top speed")
+        cli.check("duration" in cli.run(*timed_args).stdout, "plan --max-speed prints the duration")
+        rejected = cli.run("plan", grid_id, "--start", start, "--goal", goal, "--max-speed", "1",
+                           expect=(1, 2, 4))
+        cli.check("vehicle.max_acceleration" in rejected.stdout + rejected.stderr,
+                  "a top speed without an acceleration is refused naming the field")
+
         # Jobs.
         jobs = [j["id"] for j in cli.json("jobs", "list").get("jobs", [])]
         cli.check(job_id in jobs, "jobs list --json has the job")
