@@ -148,6 +148,9 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
   app.add_option("--convergence-csv", o.convergence_csv_path,
                  "also write each run's best per iteration and its seconds to this CSV");
   app.add_option("--markdown", o.markdown_path, "Markdown summary file");
+  app.add_option("--ompl-log", o.ompl_log_path,
+                 "OMPL benchmark log (for ompl_benchmark_statistics.py and Planner Arena), one "
+                 "experiment per problem: FILE, or FILE-1, FILE-2, ... for several problems");
 
   try {
     app.parse(argc, argv);

@@ -40,6 +40,9 @@ struct BenchOptions {
   std::string csv_path;              // "" for stdout
   std::string convergence_csv_path;  // "" for none
   std::string markdown_path;
+  // OMPL's benchmark log: FILE for one problem; FILE-1, FILE-2, ... (before its extension)
+  // for several, one experiment each. "" for none.
+  std::string ompl_log_path;
   bool list_planners = false;
 };
 

@@ -5,6 +5,7 @@
 #include "absl/strings/str_join.h"
 #include "bench/bench_options.h"
 #include "bench/bench_runner.h"
+#include "bench/ompl_log.h"
 #include "bench/report.h"
 #include "core/registry.h"
 
@@ -74,12 +75,13 @@ int Main(int argc, char** argv) {
   }
 
   std::vector<RunRecord> records;
+  const absl::Time started = absl::Now();
   RunBench(
       registry, *problems, options, *params,
       [&](RunRecord record) {
         csv << CsvRow(record) << std::flush;
         if (convergence.is_open()) convergence << ConvergenceCsvRows(record) << std::flush;
-        record.convergence.clear();
+        if (options.ompl_log_path.empty()) record.convergence.clear();
         records.push_back(std::move(record));
       },
       std::cerr);
@@ -94,6 +96,15 @@ int Main(int argc, char** argv) {
   if (!csv) {
     std::cerr << "swarmplan-bench: error: writing the CSV failed\n";
     return kExitFailure;
+  }
+  if (!options.ompl_log_path.empty()) {
+    absl::StatusOr<std::vector<std::string>> logs = WriteOmplLogs(
+        options.ompl_log_path, *problems, records, options, started, absl::Now() - started);
+    if (!logs.ok()) {
+      std::cerr << "swarmplan-bench: error: " << logs.status().message() << "\n";
+      return kExitFailure;
+    }
+    std::cerr << "swarmplan-bench: OMPL log: " << absl::StrJoin(*logs, ", ") << "\n";
   }
   if (!options.markdown_path.empty()) {
     std::ofstream markdown(options.markdown_path);
