@@ -138,7 +138,10 @@ int RunCancel(const GlobalOptions& global, const std::string& id) {
 void AddOutputOptions(CLI::App* command, JobOptions* options) {
   command->add_option("-o,--output", options->output,
                       "Write the job's path to FILE (.json, .csv or .geojson)");
-  command->add_option("--output-format", options->output_format, "Format of --output")
+  command
+      ->add_option("--output-format", options->output_format,
+                   "Format of --output; vda5050: a VDA 5050 order (robot from the job's labels "
+                   "manufacturer and serial_number)")
       ->check(CLI::IsMember(PathFormats()));
 }
 

@@ -8,7 +8,9 @@
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
+#include "absl/time/clock.h"
 #include "client/output.h"
+#include "client/vda5050_order.h"
 #include "nlohmann/json.hpp"
 
 namespace swarmplan::client {
@@ -142,7 +144,7 @@ absl::StatusOr<PathFile> ParseCsvPath(const std::string& file, const std::string
 
 }  // namespace
 
-std::vector<std::string> PathFormats() { return {"json", "csv", "geojson"}; }
+std::vector<std::string> PathFormats() { return {"json", "csv", "geojson", "vda5050"}; }
 
 absl::StatusOr<std::string> PathFormatFor(const std::string& file, const std::string& format) {
   if (!format.empty()) return format;
@@ -166,7 +168,11 @@ absl::Status WritePathFile(const std::string& file, const std::string& format, c
   }
   const bool with_z = HasZ(points) || HasZ(result.raw_path());
   std::string text;
-  if (format == "csv") {
+  if (format == "vda5050") {
+    absl::StatusOr<json> order = Vda5050Order(job, absl::Now());
+    if (!order.ok()) return order.status();
+    text = order->dump(2) + "\n";
+  } else if (format == "csv") {
     text = with_z ? "x,y,z\n" : "x,y\n";
     for (const v1::Point& p : points) {
       text += with_z ? absl::StrCat(p.x(), ",", p.y(), ",", p.z(), "\n")

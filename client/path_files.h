@@ -10,7 +10,7 @@
 // reads back.
 namespace swarmplan::client {
 
-// "json", "csv", "geojson".
+// "json", "csv", "geojson", "vda5050" (given with --output-format: its files are .json).
 std::vector<std::string> PathFormats();
 
 // The format for a file: `format` when given, else from the extension (.json, .csv,
@@ -22,6 +22,7 @@ absl::StatusOr<std::string> PathFormatFor(const std::string& file, const std::st
 //             "raw_path": [...]}
 //   csv      header "x,y,z", one point per line
 //   geojson  a FeatureCollection with one LineString feature (properties: job_id, algorithm...)
+//   vda5050  a VDA 5050 order (Vda5050Order)
 // FAILED_PRECONDITION when the job has no path.
 absl::Status WritePathFile(const std::string& file, const std::string& format, const v1::Job& job);
 

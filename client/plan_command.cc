@@ -230,7 +230,10 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
                       "At most one progress report per interval (default 100ms; 1s with --json)");
   command->add_option("-o,--output", options->output,
                       "Write the path to FILE (.json, .csv or .geojson)");
-  command->add_option("--output-format", options->output_format, "Format of --output")
+  command
+      ->add_option("--output-format", options->output_format,
+                   "Format of --output; vda5050: a VDA 5050 order (robot from the job's labels "
+                   "manufacturer and serial_number)")
       ->check(CLI::IsMember(PathFormats()));
   OnChosen(command, action, [&global, options] { return Run(global, *options); });
 }

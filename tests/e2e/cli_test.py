@@ -90,11 +90,48 @@ def pick_swarm_planner(algorithms):
     return None
 
 
+def check_vda5050_order(cli, work, standards, timed_args, map_id):
+    """plan --output-format vda5050: a VDA 5050 order valid by the published schema, its nodes
+    the timed path's points, edge speeds within the vehicle's top speed."""
+    order_file = os.path.join(work, "order.json")
+    cli.run(*timed_args, "--label", "manufacturer=ACME", "--label", "serial_number=agv-7",
+            "--output", order_file, "--output-format", "vda5050")
+    with open(order_file) as f:
+        order = json.load(f)
+    nodes, edges = order.get("nodes", []), order.get("edges", [])
+    cli.check(order.get("version") == "3.0.0" and order.get("manufacturer") == "ACME" and
+              order.get("serialNumber") == "agv-7" and len(nodes) >= 2 and
+              len(edges) == len(nodes) - 1 and
+              all(n["nodePosition"]["mapId"] == map_id for n in nodes) and
+              [n["sequenceId"] for n in nodes] == list(range(0, 2 * len(nodes), 2)) and
+              all(0 < e.get("maximumSpeed", 0) <= 1.5 + 1e-9 for e in edges),
+              "the VDA 5050 order has a node per point, edges between them within the top speed")
+    schema_file = os.path.join(standards, "vda5050", "order.schema")
+    if not os.path.exists(schema_file):
+        print("skip the VDA 5050 schema check: %s is absent" % schema_file)
+        return
+    try:
+        import jsonschema
+    except ImportError:
+        cli.fail("python3-jsonschema is missing (scripts/install-deps installs it)")
+        return
+    with open(schema_file) as f:
+        schema = json.load(f)
+    errors = sorted(jsonschema.Draft202012Validator(schema).iter_errors(order), key=str)
+    cli.check(not errors, "the order validates against VDA 5050 order.schema 3.0.0%s"
+              % ("" if not errors else ": " + "; ".join(e.message for e in errors[:3])))
+    broken = dict(order, nodes=[dict(nodes[0], sequenceId=-1)] + nodes[1:])
+    cli.check(any(True for _ in jsonschema.Draft202012Validator(schema).iter_errors(broken)),
+              "the schema check rejects a negative sequenceId")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--client", required=True)
     parser.add_argument("--server-binary", required=True)
     parser.add_argument("--samples", required=True)
+    parser.add_argument("--standards", default="",
+                        help="../shared/standards: the VDA 5050 order schema")
     args = parser.parse_args()
     warehouse = os.path.join(args.samples, "warehouse.ascii")
     circles = os.path.join(args.samples, "circles.json")
@@ -225,6 +262,7 @@ def main():
                   duration > timed.get("smoothed_metrics", {}).get("length", 1e9) / 1.5,
                   "plan --max-speed returns the smoothed path timed, slower than its top speed")
         cli.check("duration" in cli.run(*timed_args).stdout, "plan --max-speed prints the duration")
+        check_vda5050_order(cli, work, args.standards, timed_args, grid_id)
         rejected = cli.run("plan", grid_id, "--start", start, "--goal", goal, "--max-speed", "1",
                            expect=(1, 2, 4))
         cli.check("vehicle.max_acceleration" in rejected.stdout + rejected.stderr,
