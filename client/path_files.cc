@@ -86,12 +86,25 @@ absl::StatusOr<PathFile> ParseJsonPath(const std::string& file, const std::strin
   PathFile path;
   path.label = std::filesystem::path(file).stem().string();
   const json* points = nullptr;
+  json order_points;
   if (document.is_array()) {
     points = &document;
   } else if (document.is_object() && document.contains("path")) {
     points = &document["path"];
     if (document.contains("job_id") && document["job_id"].is_string()) {
       path.label = document["job_id"].get<std::string>();
+    }
+  } else if (document.is_object() && document.contains("nodes") && document["nodes"].is_array()) {
+    // A VDA 5050 order: its nodes' positions.
+    order_points = json::array();
+    for (const json& node : document["nodes"]) {
+      if (node.is_object() && node.contains("nodePosition")) {
+        order_points.push_back(node["nodePosition"]);
+      }
+    }
+    points = &order_points;
+    if (document.contains("orderId") && document["orderId"].is_string()) {
+      path.label = document["orderId"].get<std::string>();
     }
   } else if ((points = FindLineString(document)) != nullptr) {
     const json* properties = nullptr;

@@ -31,8 +31,9 @@ struct PathFile {
   std::vector<v1::Point> points;
 };
 
-// Reads a path written by WritePathFile, or any GeoJSON with a LineString, a JSON array of
-// [x, y(, z)] or {"x", "y"(, "z")}, or a CSV with x,y(,z) columns.
+// Reads a path written by WritePathFile (of a VDA 5050 order, its nodes' positions), or any
+// GeoJSON with a LineString, a JSON array of [x, y(, z)] or {"x", "y"(, "z")}, or a CSV with
+// x,y(,z) columns.
 absl::StatusOr<PathFile> ReadPathFile(const std::string& file);
 
 }  // namespace swarmplan::client

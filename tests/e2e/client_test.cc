@@ -102,7 +102,8 @@ TEST(ClientPathFiles, RoundTripInEveryFormat) {
   std::filesystem::create_directories(dir);
   for (const std::string& format : PathFormats()) {
     const std::string file = (dir / ("path." + format)).string();
-    ASSERT_EQ(*PathFormatFor(file, ""), format);
+    // A VDA 5050 order is a .json file: its format is given, not guessed.
+    ASSERT_EQ(*PathFormatFor(file, format == "vda5050" ? format : ""), format);
     ASSERT_TRUE(WritePathFile(file, format, JobWithPath()).ok()) << format;
     absl::StatusOr<PathFile> read = ReadPathFile(file);
     ASSERT_TRUE(read.ok()) << format << ": " << read.status();
