@@ -184,6 +184,15 @@ void PrintJob(const v1::Job& job) {
     rows.push_back(
         {"iterations", absl::StrCat(result.iterations(), " (best at ", result.best_iteration(),
                                     "), ", result.evaluations(), " evaluations")});
+    if (request.via_points_size() > 0) {
+      std::string legs;
+      for (int i = 0; i < result.legs_size(); ++i) {
+        absl::StrAppend(&legs, i == 0 ? "" : ", ", FormatNumber(result.legs(i).metrics().length()),
+                        result.legs(i).found() ? "" : " (no path)");
+      }
+      rows.push_back({"via points", absl::StrCat("reached ", result.via_points_reached(), " of ",
+                                                 request.via_points_size(), "; legs ", legs)});
+    }
     if (result.has_timed_path()) {
       const v1::VehicleLimits& vehicle = request.vehicle();
       rows.push_back(

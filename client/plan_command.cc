@@ -34,6 +34,7 @@ struct PlanOptions {
   std::string time_budget;
   std::string smoothing;
   std::vector<std::string> labels;
+  std::vector<std::string> via_points;
   std::string request_id;
   bool detach = false;
   int progress_every = 0;
@@ -71,6 +72,11 @@ absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options,
   if (!goal.ok()) return goal.status();
   *request.mutable_start() = *start;
   *request.mutable_goal() = *goal;
+  for (const std::string& text : options.via_points) {
+    absl::StatusOr<v1::Point> via = ParsePoint("--via", text);
+    if (!via.ok()) return via.status();
+    *request.add_via_points() = *via;
+  }
   request.set_algorithm(options.algorithm);
   for (const std::string& text : options.params) {
     absl::StatusOr<std::pair<std::string, std::string>> pair = ParseKeyValue("--param", text);
@@ -182,6 +188,10 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
   command->add_option("--seed", options->seed, "Random seed; 0: the server picks one");
   command->add_option("--clearance", options->clearance, "Distance to keep from obstacles")
       ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--via", options->via_points,
+                   "A point X,Y[,Z] the path passes through, in order (repeatable; at most 32)")
+      ->allow_extra_args(false);
   command
       ->add_option("--preferred-clearance", options->preferred_clearance,
                    "Distance the path keeps from obstacles where it can (fleet objective of the "

@@ -11,6 +11,8 @@ namespace swarmplan {
 
 // The most paths a plan may ask for (Problem::alternatives).
 inline constexpr int kMaxAlternatives = 8;
+// The most via-points a plan may pass through.
+inline constexpr int kMaxViaPoints = 32;
 
 struct Limits {
   int max_iterations = 0;  // 0: the planner's own default

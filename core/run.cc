@@ -9,6 +9,7 @@
 #include "core/geometry/collision.h"
 #include "core/random.h"
 #include "core/smoothing/smoothing.h"
+#include "core/via_points.h"
 
 namespace swarmplan {
 namespace {
@@ -68,6 +69,10 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
     return absl::InvalidArgumentError(absl::StrCat(
         "alternatives: must be in [0, ", kMaxAlternatives, "], got ", problem.alternatives));
   }
+  if (request.via_points.size() > static_cast<size_t>(kMaxViaPoints)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("via_points: at most ", kMaxViaPoints, ", got ", request.via_points.size()));
+  }
   if (problem.limits.max_iterations < 0) {
     return absl::InvalidArgumentError("limits.max_iterations: must be >= 0");
   }
@@ -86,6 +91,14 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
       !s.ok()) {
     return s;
   }
+  for (size_t i = 0; i < request.via_points.size(); ++i) {
+    const std::string field = absl::StrCat("via_points[", i, "]");
+    if (absl::Status s =
+            CheckEndpoint(map, *checker, request.via_points[i], problem.clearance, field.c_str());
+        !s.ok()) {
+      return s;
+    }
+  }
   const std::unique_ptr<Planner> planner = (*info)->factory(*params);
   if (absl::Status s = planner->CheckProblem(problem); !s.ok()) {
     return absl::Status(s.code(), absl::StrCat("algorithm '", request.algorithm,
@@ -97,6 +110,7 @@ absl::Status ValidatePlanRequest(const Registry& registry, const PlanRequest& re
 absl::StatusOr<PlanResult> RunPlan(const Registry& registry, const PlanRequest& request,
                                    const StopToken& stop, Observer& observer) {
   if (absl::Status s = ValidatePlanRequest(registry, request); !s.ok()) return s;
+  if (!request.via_points.empty()) return RunThroughViaPoints(registry, request, stop, observer);
   const PlannerInfo& info = **registry.Get(request.algorithm);
   absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, request.params);
   if (!params.ok()) return params.status();

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
@@ -23,6 +24,10 @@ struct PlanRequest {
   Problem problem;
   std::string smoothing = "none";  // "none", or a method of SmoothingMethods()
   VehicleLimits vehicle;           // timed() or not: whether the result has a timed_path
+  // Points the path passes through, in order, between start and goal (at most kMaxViaPoints,
+  // each inside the map and keeping the clearance). Each leg is planned as its own problem
+  // (RunThroughViaPoints).
+  std::vector<Point3> via_points;
 };
 
 // Everything a plan returns, the same whatever the planner.
@@ -56,6 +61,17 @@ struct PlanResult {
   // With a timed vehicle and a path: the final path (the smoothed one, or the raw one when
   // smoothing lost the clearance) timed within the vehicle's limits (TimePath).
   std::optional<TimedPath> timed_path;
+  // With via-points: how many of them the path reaches, in order (all when found; when a leg
+  // finds no path, the path ends at the last via-point reached), and each planned leg, the
+  // failed one last.
+  int via_points_reached = 0;
+  struct Leg {
+    bool found = false;
+    PathMetrics metrics;  // of the leg's final path (smoothed, or raw when smoothing lost it)
+    double fitness = 0.0;
+    int iterations = 0;
+  };
+  std::vector<Leg> legs;
   // The exact optimum of the problem and the final path's cost over the optimum's (PlanCost:
   // the length on 2D maps; of the smoothed path, or of the raw one when smoothing lost the
   // clearance; 0 when the optimum is not known or no path was found). RunPlan leaves them

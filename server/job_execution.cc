@@ -5,6 +5,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "core/via_points.h"
 #include "server/job_manager.h"
 #include "server/proto_convert.h"
 
@@ -106,8 +107,11 @@ void JobManager::Execute(const JobPtr& job) {
   absl::StatusOr<PlanResult> result = RunPlan(registry_, job->plan, job->stop, publisher);
   publisher.Flush();
   if (result.ok() && !job->stop.cancelled()) {
-    SetOptimum(*job->plan.problem.map,
-               optima_.Get(job->record.request().map_id(), job->plan.problem), *result);
+    std::vector<Optimum> legs;
+    for (const Problem& leg : LegProblems(job->plan)) {
+      legs.push_back(optima_.Get(job->record.request().map_id(), leg));
+    }
+    SetOptimum(*job->plan.problem.map, CombineLegOptima(legs), *result);
   }
 
   {

@@ -139,6 +139,11 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   plan.params = std::move(*params);
   plan.smoothing = request.smoothing().empty() ? "none" : request.smoothing();
   plan.vehicle = FromProto(request.vehicle());
+  if (request.via_points_size() > kMaxViaPoints) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("via_points: at most ", kMaxViaPoints, ", got ", request.via_points_size()));
+  }
+  for (const v1::Point& p : request.via_points()) plan.via_points.push_back(FromProto(p));
   plan.problem.map = (*map)->map;
   plan.problem.start = FromProto(request.start());
   plan.problem.goal = FromProto(request.goal());

@@ -191,6 +191,14 @@ v1::PlanResult ToProto(const PlanResult& r) {
   }
   if (r.objective) *out.mutable_objective() = ToProto(*r.objective);
   if (r.seed_objective) *out.mutable_seed_objective() = ToProto(*r.seed_objective);
+  out.set_via_points_reached(r.via_points_reached);
+  for (const PlanResult::Leg& leg : r.legs) {
+    v1::LegResult* l = out.add_legs();
+    l->set_found(leg.found);
+    *l->mutable_metrics() = ToProto(leg.metrics);
+    l->set_fitness(leg.fitness);
+    l->set_iterations(leg.iterations);
+  }
   if (r.timed_path) {
     v1::TimedPath* timed = out.mutable_timed_path();
     for (const TimedPoint& p : r.timed_path->points) {

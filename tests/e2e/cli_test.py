@@ -263,6 +263,20 @@ def main():
                   "plan --max-speed returns the smoothed path timed, slower than its top speed")
         cli.check("duration" in cli.run(*timed_args).stdout, "plan --max-speed prints the duration")
         check_vda5050_order(cli, work, args.standards, timed_args, grid_id)
+        # Via-points: the path passes each, in order; the legs are reported.
+        via = cli.json("plan", grid_id, "--start", start, "--goal", goal, "--algorithm",
+                       "theta-star", "--via", "20.5,2.5", "--via", "20.5,27.5").get("result", {})
+        via_path = [(p.get("x", 0.0), p.get("y", 0.0)) for p in via.get("raw_path", [])]
+        cli.check(via.get("found") and via.get("via_points_reached") == 2 and
+                  len(via.get("legs", [])) == 3 and via_path[:1] == [START] and
+                  via_path[-1:] == [GOAL] and (20.5, 2.5) in via_path and
+                  (20.5, 27.5) in via_path and
+                  via_path.index((20.5, 2.5)) < via_path.index((20.5, 27.5)),
+                  "plan --via passes each via-point in order and reports the legs")
+        cli.check("via points" in cli.run("plan", grid_id, "--start", start, "--goal", goal,
+                                          "--algorithm", "theta-star", "--via",
+                                          "20.5,2.5").stdout,
+                  "plan --via prints the via-points reached")
         rejected = cli.run("plan", grid_id, "--start", start, "--goal", goal, "--max-speed", "1",
                            expect=(1, 2, 4))
         cli.check("vehicle.max_acceleration" in rejected.stdout + rejected.stderr,

@@ -16,7 +16,7 @@ from google.protobuf import timestamp_pb2 as google_dot_protobuf_dot_timestamp__
 from swarmplan_client._proto.swarmplan.v1 import common_pb2 as swarmplan_dot_v1_dot_common__pb2
 
 
-DESCRIPTOR = _descriptor_pool.Default().AddSerializedFile(b'\n\x17swarmplan/v1/jobs.proto\x12\x0cswarmplan.v1\x1a\x1egoogle/protobuf/duration.proto\x1a\x1fgoogle/protobuf/timestamp.proto\x1a\x19swarmplan/v1/common.proto\"S\n\tJobLimits\x12\x16\n\x0emax_iterations\x18\x01 \x01(\x05\x12.\n\x0btime_budget\x18\x02 \x01(\x0b\x32\x19.google.protobuf.Duration\"\\\n\x0fProgressOptions\x12\x18\n\x10\x65very_iterations\x18\x01 \x01(\x05\x12/\n\x0cmin_interval\x18\x02 \x01(\x0b\x32\x19.google.protobuf.Duration\"\xae\x01\n\x0fPathPreferences\x12\x1b\n\x13preferred_clearance\x18\x01 \x01(\x01\x12\x16\n\x0eturning_radius\x18\x02 \x01(\x01\x12\x1d\n\x10\x63learance_weight\x18\x03 \x01(\x01H\x00\x88\x01\x01\x12\x1d\n\x10\x63urvature_weight\x18\x04 \x01(\x01H\x01\x88\x01\x01\x42\x13\n\x11_clearance_weightB\x13\n\x11_curvature_weight\"R\n\rVehicleLimits\x12\x11\n\tmax_speed\x18\x01 \x01(\x01\x12\x18\n\x10max_acceleration\x18\x02 \x01(\x01\x12\x14\n\x0cmax_yaw_rate\x18\x03 \x01(\x01\"\x9c\x05\n\x0bPlanRequest\x12\x0e\n\x06map_id\x18\x01 \x01(\t\x12\"\n\x05start\x18\x02 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12!\n\x04goal\x18\x03 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x11\n\talgorithm\x18\x04 \x01(\t\x12=\n\nparameters\x18\x05 \x03(\x0b\x32).swarmplan.v1.PlanRequest.ParametersEntry\x12\x0c\n\x04seed\x18\x06 \x01(\x04\x12\x11\n\tclearance\x18\x07 \x01(\x01\x12\'\n\x06limits\x18\x08 \x01(\x0b\x32\x17.swarmplan.v1.JobLimits\x12\x11\n\tsmoothing\x18\t \x01(\t\x12/\n\x08progress\x18\n \x01(\x0b\x32\x1d.swarmplan.v1.ProgressOptions\x12\x19\n\x11\x63lient_request_id\x18\x0b \x01(\t\x12\x35\n\x06labels\x18\x0c \x03(\x0b\x32%.swarmplan.v1.PlanRequest.LabelsEntry\x12\x10\n\x08\x64\x65tached\x18\r \x01(\x08\x12\x32\n\x0bpreferences\x18\x0e \x01(\x0b\x32\x1d.swarmplan.v1.PathPreferences\x12\x14\n\x0c\x61lternatives\x18\x0f \x01(\x05\x12,\n\x07vehicle\x18\x10 \x01(\x0b\x32\x1b.swarmplan.v1.VehicleLimits\x1aK\n\x0fParametersEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\'\n\x05value\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.ParamValue:\x02\x38\x01\x1a-\n\x0bLabelsEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\r\n\x05value\x18\x02 \x01(\t:\x02\x38\x01\"\xa2\x01\n\x0eIterationStats\x12\x11\n\titeration\x18\x01 \x01(\x05\x12\x14\n\x0c\x62\x65st_fitness\x18\x02 \x01(\x01\x12\x14\n\x0cmean_fitness\x18\x03 \x01(\x01\x12\x13\n\x0b\x65valuations\x18\x04 \x01(\x03\x12*\n\x07\x65lapsed\x18\x05 \x01(\x0b\x32\x19.google.protobuf.Duration\x12\x10\n\x08\x66\x65\x61sible\x18\x06 \x01(\x08\"{\n\x0bPathMetrics\x12\x0e\n\x06length\x18\x01 \x01(\x01\x12\x15\n\rmin_clearance\x18\x02 \x01(\x01\x12\x15\n\rmax_curvature\x18\x03 \x01(\x01\x12\x16\n\x0eturning_points\x18\x04 \x01(\x05\x12\x16\n\x0e\x63ollision_free\x18\x05 \x01(\x08\"h\n\x0eObjectiveTerms\x12\x0e\n\x06length\x18\x01 \x01(\x01\x12\x11\n\tclearance\x18\x02 \x01(\x01\x12\x11\n\tcurvature\x18\x03 \x01(\x01\x12\x11\n\tviolation\x18\x04 \x01(\x01\x12\r\n\x05total\x18\x05 \x01(\x01\"\xca\x08\n\nPlanResult\x12\x11\n\talgorithm\x18\x01 \x01(\t\x12\r\n\x05\x66ound\x18\x02 \x01(\x08\x12%\n\x08raw_path\x18\x03 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12*\n\rsmoothed_path\x18\x04 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12.\n\x0braw_metrics\x18\x05 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x33\n\x10smoothed_metrics\x18\x06 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x11\n\tsmoothing\x18\x07 \x01(\t\x12 \n\x18smoothing_collision_free\x18\x08 \x01(\x08\x12\x0f\n\x07\x66itness\x18\t \x01(\x01\x12\x12\n\niterations\x18\n \x01(\x05\x12\x13\n\x0b\x65valuations\x18\x0b \x01(\x03\x12\x16\n\x0e\x62\x65st_iteration\x18\x0c \x01(\x05\x12\x13\n\x0bstop_reason\x18\r \x01(\t\x12,\n\twall_time\x18\x0e \x01(\x0b\x32\x19.google.protobuf.Duration\x12+\n\x08\x63pu_time\x18\x0f \x01(\x0b\x32\x19.google.protobuf.Duration\x12\x0c\n\x04seed\x18\x10 \x01(\x04\x12M\n\x13resolved_parameters\x18\x11 \x03(\x0b\x32\x30.swarmplan.v1.PlanResult.ResolvedParametersEntry\x12\x31\n\x0b\x63onvergence\x18\x12 \x03(\x0b\x32\x1c.swarmplan.v1.IterationStats\x12\x1b\n\x0eoptimum_length\x18\x13 \x01(\x01H\x00\x88\x01\x01\x12\x1d\n\x10optimality_ratio\x18\x14 \x01(\x01H\x01\x88\x01\x01\x12\x17\n\x0foptimum_planner\x18\x15 \x01(\t\x12\x14\n\x0coptimum_note\x18\x16 \x01(\t\x12\x19\n\x0coptimum_cost\x18\x17 \x01(\x01H\x02\x88\x01\x01\x12\x33\n\x0c\x61lternatives\x18\x18 \x03(\x0b\x32\x1d.swarmplan.v1.AlternativePath\x12/\n\tobjective\x18\x19 \x01(\x0b\x32\x1c.swarmplan.v1.ObjectiveTerms\x12\x34\n\x0eseed_objective\x18\x1a \x01(\x0b\x32\x1c.swarmplan.v1.ObjectiveTerms\x12+\n\ntimed_path\x18\x1b \x01(\x0b\x32\x17.swarmplan.v1.TimedPath\x1aS\n\x17ResolvedParametersEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\'\n\x05value\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.ParamValue:\x02\x38\x01\x42\x11\n\x0f_optimum_lengthB\x13\n\x11_optimality_ratioB\x0f\n\r_optimum_cost\"M\n\nTimedPoint\x12\"\n\x05point\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x0c\n\x04time\x18\x02 \x01(\x01\x12\r\n\x05speed\x18\x03 \x01(\x01\"G\n\tTimedPath\x12(\n\x06points\x18\x01 \x03(\x0b\x32\x18.swarmplan.v1.TimedPoint\x12\x10\n\x08\x64uration\x18\x02 \x01(\x01\"\xa5\x01\n\x0f\x41lternativePath\x12!\n\x04path\x18\x01 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12*\n\x07metrics\x18\x02 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x0f\n\x07\x66itness\x18\x03 \x01(\x01\x12\x1d\n\x10optimality_ratio\x18\x04 \x01(\x01H\x00\x88\x01\x01\x42\x13\n\x11_optimality_ratio\"\x8d\x03\n\x03Job\x12\n\n\x02id\x18\x01 \x01(\t\x12%\n\x05state\x18\x02 \x01(\x0e\x32\x16.swarmplan.v1.JobState\x12*\n\x07request\x18\x03 \x01(\x0b\x32\x19.swarmplan.v1.PlanRequest\x12\x0c\n\x04seed\x18\x04 \x01(\x04\x12\x16\n\x0equeue_position\x18\x05 \x01(\x05\x12.\n\ncreated_at\x18\x06 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12.\n\nstarted_at\x18\x07 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12/\n\x0b\x66inished_at\x18\x08 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12.\n\x08progress\x18\t \x01(\x0b\x32\x1c.swarmplan.v1.IterationStats\x12(\n\x06result\x18\n \x01(\x0b\x32\x18.swarmplan.v1.PlanResult\x12\x16\n\x0e\x66\x61ilure_reason\x18\x0b \x01(\t\"\xb1\x04\n\x08JobEvent\x12\x0e\n\x06job_id\x18\x01 \x01(\t\x12\x10\n\x08sequence\x18\x02 \x01(\x03\x12(\n\x04time\x18\x03 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12\x33\n\x08\x61\x63\x63\x65pted\x18\x04 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.AcceptedH\x00\x12\x31\n\x07started\x18\x05 \x01(\x0b\x32\x1e.swarmplan.v1.JobEvent.StartedH\x00\x12\x30\n\x08progress\x18\x06 \x01(\x0b\x32\x1c.swarmplan.v1.IterationStatsH\x00\x12\x33\n\x08\x66inished\x18\x07 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.FinishedH\x00\x12\x33\n\x08requeued\x18\x08 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.RequeuedH\x00\x1a\x30\n\x08\x41\x63\x63\x65pted\x12\x16\n\x0equeue_position\x18\x01 \x01(\x05\x12\x0c\n\x04seed\x18\x02 \x01(\x04\x1a\t\n\x07Started\x1as\n\x08\x46inished\x12%\n\x05state\x18\x01 \x01(\x0e\x32\x16.swarmplan.v1.JobState\x12(\n\x06result\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.PlanResult\x12\x16\n\x0e\x66\x61ilure_reason\x18\x03 \x01(\t\x1a\x1a\n\x08Requeued\x12\x0e\n\x06reason\x18\x01 \x01(\tB\x07\n\x05\x65vent\"J\n\x12SubmitPlanResponse\x12\x1e\n\x03job\x18\x01 \x01(\x0b\x32\x11.swarmplan.v1.Job\x12\x14\n\x0c\x64\x65\x64uplicated\x18\x02 \x01(\x08\"\x1d\n\x0fWatchJobRequest\x12\n\n\x02id\x18\x01 \x01(\t\"\x1b\n\rGetJobRequest\x12\n\n\x02id\x18\x01 \x01(\t\"`\n\x0fListJobsRequest\x12&\n\x06states\x18\x01 \x03(\x0e\x32\x16.swarmplan.v1.JobState\x12\x11\n\tpage_size\x18\x02 \x01(\x05\x12\x12\n\npage_token\x18\x03 \x01(\t\"L\n\x10ListJobsResponse\x12\x1f\n\x04jobs\x18\x01 \x03(\x0b\x32\x11.swarmplan.v1.Job\x12\x17\n\x0fnext_page_token\x18\x02 \x01(\t\"\x1e\n\x10\x43\x61ncelJobRequest\x12\n\n\x02id\x18\x01 \x01(\t*\xd8\x01\n\x08JobState\x12\x19\n\x15JOB_STATE_UNSPECIFIED\x10\x00\x12\x14\n\x10JOB_STATE_QUEUED\x10\x01\x12\x15\n\x11JOB_STATE_RUNNING\x10\x02\x12\x17\n\x13JOB_STATE_SUCCEEDED\x10\x03\x12\x1b\n\x17JOB_STATE_NO_PATH_FOUND\x10\x04\x12\x17\n\x13JOB_STATE_CANCELLED\x10\x05\x12\x1f\n\x1bJOB_STATE_DEADLINE_EXCEEDED\x10\x06\x12\x14\n\x10JOB_STATE_FAILED\x10\x07\x32\x9e\x03\n\nJobService\x12I\n\nSubmitPlan\x12\x19.swarmplan.v1.PlanRequest\x1a .swarmplan.v1.SubmitPlanResponse\x12;\n\x04Plan\x12\x19.swarmplan.v1.PlanRequest\x1a\x16.swarmplan.v1.JobEvent0\x01\x12\x43\n\x08WatchJob\x12\x1d.swarmplan.v1.WatchJobRequest\x1a\x16.swarmplan.v1.JobEvent0\x01\x12\x38\n\x06GetJob\x12\x1b.swarmplan.v1.GetJobRequest\x1a\x11.swarmplan.v1.Job\x12I\n\x08ListJobs\x12\x1d.swarmplan.v1.ListJobsRequest\x1a\x1e.swarmplan.v1.ListJobsResponse\x12>\n\tCancelJob\x12\x1e.swarmplan.v1.CancelJobRequest\x1a\x11.swarmplan.v1.JobB\x03\xf8\x01\x01\x62\x06proto3')
+DESCRIPTOR = _descriptor_pool.Default().AddSerializedFile(b'\n\x17swarmplan/v1/jobs.proto\x12\x0cswarmplan.v1\x1a\x1egoogle/protobuf/duration.proto\x1a\x1fgoogle/protobuf/timestamp.proto\x1a\x19swarmplan/v1/common.proto\"S\n\tJobLimits\x12\x16\n\x0emax_iterations\x18\x01 \x01(\x05\x12.\n\x0btime_budget\x18\x02 \x01(\x0b\x32\x19.google.protobuf.Duration\"\\\n\x0fProgressOptions\x12\x18\n\x10\x65very_iterations\x18\x01 \x01(\x05\x12/\n\x0cmin_interval\x18\x02 \x01(\x0b\x32\x19.google.protobuf.Duration\"\xae\x01\n\x0fPathPreferences\x12\x1b\n\x13preferred_clearance\x18\x01 \x01(\x01\x12\x16\n\x0eturning_radius\x18\x02 \x01(\x01\x12\x1d\n\x10\x63learance_weight\x18\x03 \x01(\x01H\x00\x88\x01\x01\x12\x1d\n\x10\x63urvature_weight\x18\x04 \x01(\x01H\x01\x88\x01\x01\x42\x13\n\x11_clearance_weightB\x13\n\x11_curvature_weight\"R\n\rVehicleLimits\x12\x11\n\tmax_speed\x18\x01 \x01(\x01\x12\x18\n\x10max_acceleration\x18\x02 \x01(\x01\x12\x14\n\x0cmax_yaw_rate\x18\x03 \x01(\x01\"\xc5\x05\n\x0bPlanRequest\x12\x0e\n\x06map_id\x18\x01 \x01(\t\x12\"\n\x05start\x18\x02 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12!\n\x04goal\x18\x03 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x11\n\talgorithm\x18\x04 \x01(\t\x12=\n\nparameters\x18\x05 \x03(\x0b\x32).swarmplan.v1.PlanRequest.ParametersEntry\x12\x0c\n\x04seed\x18\x06 \x01(\x04\x12\x11\n\tclearance\x18\x07 \x01(\x01\x12\'\n\x06limits\x18\x08 \x01(\x0b\x32\x17.swarmplan.v1.JobLimits\x12\x11\n\tsmoothing\x18\t \x01(\t\x12/\n\x08progress\x18\n \x01(\x0b\x32\x1d.swarmplan.v1.ProgressOptions\x12\x19\n\x11\x63lient_request_id\x18\x0b \x01(\t\x12\x35\n\x06labels\x18\x0c \x03(\x0b\x32%.swarmplan.v1.PlanRequest.LabelsEntry\x12\x10\n\x08\x64\x65tached\x18\r \x01(\x08\x12\x32\n\x0bpreferences\x18\x0e \x01(\x0b\x32\x1d.swarmplan.v1.PathPreferences\x12\x14\n\x0c\x61lternatives\x18\x0f \x01(\x05\x12,\n\x07vehicle\x18\x10 \x01(\x0b\x32\x1b.swarmplan.v1.VehicleLimits\x12\'\n\nvia_points\x18\x11 \x03(\x0b\x32\x13.swarmplan.v1.Point\x1aK\n\x0fParametersEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\'\n\x05value\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.ParamValue:\x02\x38\x01\x1a-\n\x0bLabelsEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\r\n\x05value\x18\x02 \x01(\t:\x02\x38\x01\"\xa2\x01\n\x0eIterationStats\x12\x11\n\titeration\x18\x01 \x01(\x05\x12\x14\n\x0c\x62\x65st_fitness\x18\x02 \x01(\x01\x12\x14\n\x0cmean_fitness\x18\x03 \x01(\x01\x12\x13\n\x0b\x65valuations\x18\x04 \x01(\x03\x12*\n\x07\x65lapsed\x18\x05 \x01(\x0b\x32\x19.google.protobuf.Duration\x12\x10\n\x08\x66\x65\x61sible\x18\x06 \x01(\x08\"{\n\x0bPathMetrics\x12\x0e\n\x06length\x18\x01 \x01(\x01\x12\x15\n\rmin_clearance\x18\x02 \x01(\x01\x12\x15\n\rmax_curvature\x18\x03 \x01(\x01\x12\x16\n\x0eturning_points\x18\x04 \x01(\x05\x12\x16\n\x0e\x63ollision_free\x18\x05 \x01(\x08\"h\n\x0eObjectiveTerms\x12\x0e\n\x06length\x18\x01 \x01(\x01\x12\x11\n\tclearance\x18\x02 \x01(\x01\x12\x11\n\tcurvature\x18\x03 \x01(\x01\x12\x11\n\tviolation\x18\x04 \x01(\x01\x12\r\n\x05total\x18\x05 \x01(\x01\"\x8d\t\n\nPlanResult\x12\x11\n\talgorithm\x18\x01 \x01(\t\x12\r\n\x05\x66ound\x18\x02 \x01(\x08\x12%\n\x08raw_path\x18\x03 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12*\n\rsmoothed_path\x18\x04 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12.\n\x0braw_metrics\x18\x05 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x33\n\x10smoothed_metrics\x18\x06 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x11\n\tsmoothing\x18\x07 \x01(\t\x12 \n\x18smoothing_collision_free\x18\x08 \x01(\x08\x12\x0f\n\x07\x66itness\x18\t \x01(\x01\x12\x12\n\niterations\x18\n \x01(\x05\x12\x13\n\x0b\x65valuations\x18\x0b \x01(\x03\x12\x16\n\x0e\x62\x65st_iteration\x18\x0c \x01(\x05\x12\x13\n\x0bstop_reason\x18\r \x01(\t\x12,\n\twall_time\x18\x0e \x01(\x0b\x32\x19.google.protobuf.Duration\x12+\n\x08\x63pu_time\x18\x0f \x01(\x0b\x32\x19.google.protobuf.Duration\x12\x0c\n\x04seed\x18\x10 \x01(\x04\x12M\n\x13resolved_parameters\x18\x11 \x03(\x0b\x32\x30.swarmplan.v1.PlanResult.ResolvedParametersEntry\x12\x31\n\x0b\x63onvergence\x18\x12 \x03(\x0b\x32\x1c.swarmplan.v1.IterationStats\x12\x1b\n\x0eoptimum_length\x18\x13 \x01(\x01H\x00\x88\x01\x01\x12\x1d\n\x10optimality_ratio\x18\x14 \x01(\x01H\x01\x88\x01\x01\x12\x17\n\x0foptimum_planner\x18\x15 \x01(\t\x12\x14\n\x0coptimum_note\x18\x16 \x01(\t\x12\x19\n\x0coptimum_cost\x18\x17 \x01(\x01H\x02\x88\x01\x01\x12\x33\n\x0c\x61lternatives\x18\x18 \x03(\x0b\x32\x1d.swarmplan.v1.AlternativePath\x12/\n\tobjective\x18\x19 \x01(\x0b\x32\x1c.swarmplan.v1.ObjectiveTerms\x12\x34\n\x0eseed_objective\x18\x1a \x01(\x0b\x32\x1c.swarmplan.v1.ObjectiveTerms\x12+\n\ntimed_path\x18\x1b \x01(\x0b\x32\x17.swarmplan.v1.TimedPath\x12\x1a\n\x12via_points_reached\x18\x1c \x01(\x05\x12%\n\x04legs\x18\x1d \x03(\x0b\x32\x17.swarmplan.v1.LegResult\x1aS\n\x17ResolvedParametersEntry\x12\x0b\n\x03key\x18\x01 \x01(\t\x12\'\n\x05value\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.ParamValue:\x02\x38\x01\x42\x11\n\x0f_optimum_lengthB\x13\n\x11_optimality_ratioB\x0f\n\r_optimum_cost\"k\n\tLegResult\x12\r\n\x05\x66ound\x18\x01 \x01(\x08\x12*\n\x07metrics\x18\x02 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x0f\n\x07\x66itness\x18\x03 \x01(\x01\x12\x12\n\niterations\x18\x04 \x01(\x05\"M\n\nTimedPoint\x12\"\n\x05point\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x0c\n\x04time\x18\x02 \x01(\x01\x12\r\n\x05speed\x18\x03 \x01(\x01\"G\n\tTimedPath\x12(\n\x06points\x18\x01 \x03(\x0b\x32\x18.swarmplan.v1.TimedPoint\x12\x10\n\x08\x64uration\x18\x02 \x01(\x01\"\xa5\x01\n\x0f\x41lternativePath\x12!\n\x04path\x18\x01 \x03(\x0b\x32\x13.swarmplan.v1.Point\x12*\n\x07metrics\x18\x02 \x01(\x0b\x32\x19.swarmplan.v1.PathMetrics\x12\x0f\n\x07\x66itness\x18\x03 \x01(\x01\x12\x1d\n\x10optimality_ratio\x18\x04 \x01(\x01H\x00\x88\x01\x01\x42\x13\n\x11_optimality_ratio\"\x8d\x03\n\x03Job\x12\n\n\x02id\x18\x01 \x01(\t\x12%\n\x05state\x18\x02 \x01(\x0e\x32\x16.swarmplan.v1.JobState\x12*\n\x07request\x18\x03 \x01(\x0b\x32\x19.swarmplan.v1.PlanRequest\x12\x0c\n\x04seed\x18\x04 \x01(\x04\x12\x16\n\x0equeue_position\x18\x05 \x01(\x05\x12.\n\ncreated_at\x18\x06 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12.\n\nstarted_at\x18\x07 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12/\n\x0b\x66inished_at\x18\x08 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12.\n\x08progress\x18\t \x01(\x0b\x32\x1c.swarmplan.v1.IterationStats\x12(\n\x06result\x18\n \x01(\x0b\x32\x18.swarmplan.v1.PlanResult\x12\x16\n\x0e\x66\x61ilure_reason\x18\x0b \x01(\t\"\xb1\x04\n\x08JobEvent\x12\x0e\n\x06job_id\x18\x01 \x01(\t\x12\x10\n\x08sequence\x18\x02 \x01(\x03\x12(\n\x04time\x18\x03 \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12\x33\n\x08\x61\x63\x63\x65pted\x18\x04 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.AcceptedH\x00\x12\x31\n\x07started\x18\x05 \x01(\x0b\x32\x1e.swarmplan.v1.JobEvent.StartedH\x00\x12\x30\n\x08progress\x18\x06 \x01(\x0b\x32\x1c.swarmplan.v1.IterationStatsH\x00\x12\x33\n\x08\x66inished\x18\x07 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.FinishedH\x00\x12\x33\n\x08requeued\x18\x08 \x01(\x0b\x32\x1f.swarmplan.v1.JobEvent.RequeuedH\x00\x1a\x30\n\x08\x41\x63\x63\x65pted\x12\x16\n\x0equeue_position\x18\x01 \x01(\x05\x12\x0c\n\x04seed\x18\x02 \x01(\x04\x1a\t\n\x07Started\x1as\n\x08\x46inished\x12%\n\x05state\x18\x01 \x01(\x0e\x32\x16.swarmplan.v1.JobState\x12(\n\x06result\x18\x02 \x01(\x0b\x32\x18.swarmplan.v1.PlanResult\x12\x16\n\x0e\x66\x61ilure_reason\x18\x03 \x01(\t\x1a\x1a\n\x08Requeued\x12\x0e\n\x06reason\x18\x01 \x01(\tB\x07\n\x05\x65vent\"J\n\x12SubmitPlanResponse\x12\x1e\n\x03job\x18\x01 \x01(\x0b\x32\x11.swarmplan.v1.Job\x12\x14\n\x0c\x64\x65\x64uplicated\x18\x02 \x01(\x08\"\x1d\n\x0fWatchJobRequest\x12\n\n\x02id\x18\x01 \x01(\t\"\x1b\n\rGetJobRequest\x12\n\n\x02id\x18\x01 \x01(\t\"`\n\x0fListJobsRequest\x12&\n\x06states\x18\x01 \x03(\x0e\x32\x16.swarmplan.v1.JobState\x12\x11\n\tpage_size\x18\x02 \x01(\x05\x12\x12\n\npage_token\x18\x03 \x01(\t\"L\n\x10ListJobsResponse\x12\x1f\n\x04jobs\x18\x01 \x03(\x0b\x32\x11.swarmplan.v1.Job\x12\x17\n\x0fnext_page_token\x18\x02 \x01(\t\"\x1e\n\x10\x43\x61ncelJobRequest\x12\n\n\x02id\x18\x01 \x01(\t*\xd8\x01\n\x08JobState\x12\x19\n\x15JOB_STATE_UNSPECIFIED\x10\x00\x12\x14\n\x10JOB_STATE_QUEUED\x10\x01\x12\x15\n\x11JOB_STATE_RUNNING\x10\x02\x12\x17\n\x13JOB_STATE_SUCCEEDED\x10\x03\x12\x1b\n\x17JOB_STATE_NO_PATH_FOUND\x10\x04\x12\x17\n\x13JOB_STATE_CANCELLED\x10\x05\x12\x1f\n\x1bJOB_STATE_DEADLINE_EXCEEDED\x10\x06\x12\x14\n\x10JOB_STATE_FAILED\x10\x07\x32\x9e\x03\n\nJobService\x12I\n\nSubmitPlan\x12\x19.swarmplan.v1.PlanRequest\x1a .swarmplan.v1.SubmitPlanResponse\x12;\n\x04Plan\x12\x19.swarmplan.v1.PlanRequest\x1a\x16.swarmplan.v1.JobEvent0\x01\x12\x43\n\x08WatchJob\x12\x1d.swarmplan.v1.WatchJobRequest\x1a\x16.swarmplan.v1.JobEvent0\x01\x12\x38\n\x06GetJob\x12\x1b.swarmplan.v1.GetJobRequest\x1a\x11.swarmplan.v1.Job\x12I\n\x08ListJobs\x12\x1d.swarmplan.v1.ListJobsRequest\x1a\x1e.swarmplan.v1.ListJobsResponse\x12>\n\tCancelJob\x12\x1e.swarmplan.v1.CancelJobRequest\x1a\x11.swarmplan.v1.JobB\x03\xf8\x01\x01\x62\x06proto3')
 
 _builder.BuildMessageAndEnumDescriptors(DESCRIPTOR, globals())
 _builder.BuildTopDescriptorsAndMessages(DESCRIPTOR, 'swarmplan_client._proto.swarmplan.v1.jobs_pb2', globals())
@@ -30,8 +30,8 @@ if _descriptor._USE_C_DESCRIPTORS == False:
   _PLANREQUEST_LABELSENTRY._serialized_options = b'8\001'
   _PLANRESULT_RESOLVEDPARAMETERSENTRY._options = None
   _PLANRESULT_RESOLVEDPARAMETERSENTRY._serialized_options = b'8\001'
-  _JOBSTATE._serialized_start=4370
-  _JOBSTATE._serialized_end=4586
+  _JOBSTATE._serialized_start=4587
+  _JOBSTATE._serialized_end=4803
   _JOBLIMITS._serialized_start=133
   _JOBLIMITS._serialized_end=216
   _PROGRESSOPTIONS._serialized_start=218
@@ -41,51 +41,53 @@ if _descriptor._USE_C_DESCRIPTORS == False:
   _VEHICLELIMITS._serialized_start=489
   _VEHICLELIMITS._serialized_end=571
   _PLANREQUEST._serialized_start=574
-  _PLANREQUEST._serialized_end=1242
-  _PLANREQUEST_PARAMETERSENTRY._serialized_start=1120
-  _PLANREQUEST_PARAMETERSENTRY._serialized_end=1195
-  _PLANREQUEST_LABELSENTRY._serialized_start=1197
-  _PLANREQUEST_LABELSENTRY._serialized_end=1242
-  _ITERATIONSTATS._serialized_start=1245
-  _ITERATIONSTATS._serialized_end=1407
-  _PATHMETRICS._serialized_start=1409
-  _PATHMETRICS._serialized_end=1532
-  _OBJECTIVETERMS._serialized_start=1534
-  _OBJECTIVETERMS._serialized_end=1638
-  _PLANRESULT._serialized_start=1641
-  _PLANRESULT._serialized_end=2739
-  _PLANRESULT_RESOLVEDPARAMETERSENTRY._serialized_start=2599
-  _PLANRESULT_RESOLVEDPARAMETERSENTRY._serialized_end=2682
-  _TIMEDPOINT._serialized_start=2741
-  _TIMEDPOINT._serialized_end=2818
-  _TIMEDPATH._serialized_start=2820
-  _TIMEDPATH._serialized_end=2891
-  _ALTERNATIVEPATH._serialized_start=2894
-  _ALTERNATIVEPATH._serialized_end=3059
-  _JOB._serialized_start=3062
-  _JOB._serialized_end=3459
-  _JOBEVENT._serialized_start=3462
-  _JOBEVENT._serialized_end=4023
-  _JOBEVENT_ACCEPTED._serialized_start=3810
-  _JOBEVENT_ACCEPTED._serialized_end=3858
-  _JOBEVENT_STARTED._serialized_start=3860
-  _JOBEVENT_STARTED._serialized_end=3869
-  _JOBEVENT_FINISHED._serialized_start=3871
-  _JOBEVENT_FINISHED._serialized_end=3986
-  _JOBEVENT_REQUEUED._serialized_start=3988
-  _JOBEVENT_REQUEUED._serialized_end=4014
-  _SUBMITPLANRESPONSE._serialized_start=4025
-  _SUBMITPLANRESPONSE._serialized_end=4099
-  _WATCHJOBREQUEST._serialized_start=4101
-  _WATCHJOBREQUEST._serialized_end=4130
-  _GETJOBREQUEST._serialized_start=4132
-  _GETJOBREQUEST._serialized_end=4159
-  _LISTJOBSREQUEST._serialized_start=4161
-  _LISTJOBSREQUEST._serialized_end=4257
-  _LISTJOBSRESPONSE._serialized_start=4259
-  _LISTJOBSRESPONSE._serialized_end=4335
-  _CANCELJOBREQUEST._serialized_start=4337
-  _CANCELJOBREQUEST._serialized_end=4367
-  _JOBSERVICE._serialized_start=4589
-  _JOBSERVICE._serialized_end=5003
+  _PLANREQUEST._serialized_end=1283
+  _PLANREQUEST_PARAMETERSENTRY._serialized_start=1161
+  _PLANREQUEST_PARAMETERSENTRY._serialized_end=1236
+  _PLANREQUEST_LABELSENTRY._serialized_start=1238
+  _PLANREQUEST_LABELSENTRY._serialized_end=1283
+  _ITERATIONSTATS._serialized_start=1286
+  _ITERATIONSTATS._serialized_end=1448
+  _PATHMETRICS._serialized_start=1450
+  _PATHMETRICS._serialized_end=1573
+  _OBJECTIVETERMS._serialized_start=1575
+  _OBJECTIVETERMS._serialized_end=1679
+  _PLANRESULT._serialized_start=1682
+  _PLANRESULT._serialized_end=2847
+  _PLANRESULT_RESOLVEDPARAMETERSENTRY._serialized_start=2707
+  _PLANRESULT_RESOLVEDPARAMETERSENTRY._serialized_end=2790
+  _LEGRESULT._serialized_start=2849
+  _LEGRESULT._serialized_end=2956
+  _TIMEDPOINT._serialized_start=2958
+  _TIMEDPOINT._serialized_end=3035
+  _TIMEDPATH._serialized_start=3037
+  _TIMEDPATH._serialized_end=3108
+  _ALTERNATIVEPATH._serialized_start=3111
+  _ALTERNATIVEPATH._serialized_end=3276
+  _JOB._serialized_start=3279
+  _JOB._serialized_end=3676
+  _JOBEVENT._serialized_start=3679
+  _JOBEVENT._serialized_end=4240
+  _JOBEVENT_ACCEPTED._serialized_start=4027
+  _JOBEVENT_ACCEPTED._serialized_end=4075
+  _JOBEVENT_STARTED._serialized_start=4077
+  _JOBEVENT_STARTED._serialized_end=4086
+  _JOBEVENT_FINISHED._serialized_start=4088
+  _JOBEVENT_FINISHED._serialized_end=4203
+  _JOBEVENT_REQUEUED._serialized_start=4205
+  _JOBEVENT_REQUEUED._serialized_end=4231
+  _SUBMITPLANRESPONSE._serialized_start=4242
+  _SUBMITPLANRESPONSE._serialized_end=4316
+  _WATCHJOBREQUEST._serialized_start=4318
+  _WATCHJOBREQUEST._serialized_end=4347
+  _GETJOBREQUEST._serialized_start=4349
+  _GETJOBREQUEST._serialized_end=4376
+  _LISTJOBSREQUEST._serialized_start=4378
+  _LISTJOBSREQUEST._serialized_end=4474
+  _LISTJOBSRESPONSE._serialized_start=4476
+  _LISTJOBSRESPONSE._serialized_end=4552
+  _CANCELJOBREQUEST._serialized_start=4554
+  _CANCELJOBREQUEST._serialized_end=4584
+  _JOBSERVICE._serialized_start=4806
+  _JOBSERVICE._serialized_end=5220
 # @@protoc_insertion_point(module_scope)
