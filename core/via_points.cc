@@ -1,7 +1,5 @@
 #include "core/via_points.h"
 
-#include <time.h>
-
 #include <utility>
 
 #include "absl/strings/str_cat.h"
@@ -11,12 +9,6 @@
 
 namespace swarmplan {
 namespace {
-
-absl::Duration LegCpuTime() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return absl::Seconds(ts.tv_sec) + absl::Nanoseconds(ts.tv_nsec);
-}
 
 // Passes a leg's iterations on as iterations of the whole plan.
 class LegObserver final : public Observer {
@@ -62,7 +54,6 @@ std::vector<Problem> LegProblems(const PlanRequest& request) {
 absl::StatusOr<PlanResult> RunThroughViaPoints(const Registry& registry, const PlanRequest& request,
                                                const StopToken& stop, Observer& observer) {
   const absl::Time start_time = absl::Now();
-  const absl::Duration cpu_start = LegCpuTime();
   const uint64_t seed = request.problem.seed != 0 ? request.problem.seed : PickSeed();
   const absl::Duration budget = request.problem.limits.time_budget;
   const std::vector<Problem> legs = LegProblems(request);
@@ -95,6 +86,7 @@ absl::StatusOr<PlanResult> RunThroughViaPoints(const Registry& registry, const P
       joined.convergence.push_back(shifted.Shift(s));
     joined.iterations += result->iterations;
     joined.evaluations += result->evaluations;
+    joined.cpu_time += result->cpu_time;
     joined.stop_reason = result->stop_reason;
     PlanResult::Leg& summary = joined.legs.emplace_back();
     summary.found = result->found;
@@ -144,7 +136,6 @@ absl::StatusOr<PlanResult> RunThroughViaPoints(const Registry& registry, const P
   joined.raw_metrics = EvaluatePath(map, joined.raw_path, request.problem.clearance);
   joined.smoothed_metrics = EvaluatePath(map, joined.smoothed_path, request.problem.clearance);
   joined.wall_time = absl::Now() - start_time;
-  joined.cpu_time = LegCpuTime() - cpu_start;
   return joined;
 }
 
