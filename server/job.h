@@ -29,7 +29,6 @@ struct Job {
   const std::string id;
   const bool detached;  // keeps running when its Plan caller goes away
   PlanRequest plan;     // core request: map resolved, seed fixed
-  std::string map_name;
   StopToken stop;
   JobEvents events;
 

@@ -117,7 +117,7 @@ JobManager::~JobManager() {
 }
 
 absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, uint64_t seed,
-                                                std::string* map_name) const {
+                                                v1::MapInfo* map_info) const {
   if (request.map_id().empty()) return absl::InvalidArgumentError("map_id: required");
   if (request.algorithm().empty()) {
     return absl::InvalidArgumentError(
@@ -157,7 +157,7 @@ absl::StatusOr<PlanRequest> JobManager::Resolve(const v1::PlanRequest& request, 
   plan.problem.limits.time_budget = budget > absl::ZeroDuration() ? budget : config_.max_job_time;
   plan.problem.seed = seed;
   if (absl::Status s = ValidatePlanRequest(registry_, plan); !s.ok()) return s;
-  *map_name = (*map)->info.name();
+  *map_info = (*map)->info;
   return plan;
 }
 
@@ -265,13 +265,12 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     }
   }
   const uint64_t seed = request.seed() != 0 ? request.seed() : PickSeed();
-  std::string map_name;
-  absl::StatusOr<PlanRequest> plan = Resolve(request, seed, &map_name);
+  v1::MapInfo map;
+  absl::StatusOr<PlanRequest> plan = Resolve(request, seed, &map);
   if (!plan.ok()) return plan.status();
 
   auto job = std::make_shared<Job>(NewId("job-"), detached);
   job->plan = std::move(*plan);
-  job->map_name = map_name;
   // Known before a worker can take it, so that it finishes (and is cached) as a known job.
   Add(job);
   {
@@ -283,6 +282,8 @@ absl::StatusOr<JobManager::Submitted> JobManager::Submit(const v1::PlanRequest& 
     *job->record.mutable_request() = request;
     job->record.mutable_request()->set_detached(detached);
     job->record.set_seed(seed);
+    job->record.set_map_name(map.name());
+    job->record.set_map_version(map.version());
     *job->record.mutable_created_at() = ToProto(now);
     // Queue, record and announce under the job's lock: a worker cannot start it before.
     absl::StatusOr<int64_t> position = shared()
@@ -604,9 +605,8 @@ absl::Status JobManager::Recover() {
       if (!s.client_request_id_known) Persist(*job, job->record);
       continue;
     }
-    std::string map_name;
-    absl::StatusOr<PlanRequest> plan =
-        Resolve(job->record.request(), job->record.seed(), &map_name);
+    v1::MapInfo map;
+    absl::StatusOr<PlanRequest> plan = Resolve(job->record.request(), job->record.seed(), &map);
     if (!plan.ok()) {
       Finish(*job, v1::JOB_STATE_FAILED, nullptr,
              absl::StrCat("cannot run again after a restart: ", plan.status().message()));
@@ -614,7 +614,6 @@ absl::Status JobManager::Recover() {
       continue;
     }
     job->plan = std::move(*plan);
-    job->map_name = map_name;
     job->record.set_state(v1::JOB_STATE_QUEUED);
     job->record.clear_started_at();
     job->record.clear_progress();

@@ -94,7 +94,7 @@ class JobManager {
 
  private:
   absl::StatusOr<PlanRequest> Resolve(const v1::PlanRequest& request, uint64_t seed,
-                                      std::string* map_name) const;
+                                      v1::MapInfo* map_info) const;
   void Execute(const JobPtr& job);  // job_execution.cc
   // Sets the final state, records and publishes it; nothing when the job's lease was lost.
   void Finish(Job& job, v1::JobState state, const PlanResult* result, const std::string& reason)

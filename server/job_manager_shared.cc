@@ -116,16 +116,14 @@ void JobManager::RunLeased(const JobLease& lease) {
     followed_.erase(job->id);
   }
   if (job->plan.problem.map == nullptr) {  // submitted on another replica
-    std::string map_name;
-    absl::StatusOr<PlanRequest> plan =
-        Resolve(job->record.request(), job->record.seed(), &map_name);
+    v1::MapInfo map;
+    absl::StatusOr<PlanRequest> plan = Resolve(job->record.request(), job->record.seed(), &map);
     if (!plan.ok()) {
       Finish(*job, v1::JOB_STATE_FAILED, nullptr,
              absl::StrCat("cannot run: ", plan.status().message()));
       return;
     }
     job->plan = std::move(*plan);
-    job->map_name = map_name;
   }
   if (!queue_->Push(job, /*ignore_capacity=*/true).ok()) Requeue(*job);
 }

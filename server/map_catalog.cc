@@ -30,6 +30,7 @@ absl::StatusOr<v1::MapInfo> InfoOf(const StoredMap& stored) {
   *info.mutable_created_at() = ToProto(stored.created_at);
   info.set_content_hash(stored.content_hash);
   info.set_format(stored.format);
+  info.set_version(stored.version);
   return info;
 }
 
@@ -51,17 +52,21 @@ absl::StatusOr<std::vector<std::string>> MapCatalog::Load() {
         store_.ListMaps(after.has_value() ? &*after : nullptr, kLoadBatch);
     if (!batch.ok()) return batch.status();
     for (const StoredMap& listed : *batch) {
-      if (!listed.info.empty()) continue;
+      if (!listed.info.empty() && listed.version != 0) continue;
       absl::StatusOr<StoredMap> stored = store_.GetMap(listed.id);
       if (absl::IsNotFound(stored.status())) continue;  // deleted meanwhile
       if (!stored.ok()) return stored.status();
-      absl::StatusOr<Map> map = Parse(*stored, load_options_);
-      if (!map.ok()) {
-        warnings.push_back(absl::StrCat("map ", stored->id, ": ", map.status().message()));
-        continue;
+      if (stored->info.empty()) {
+        absl::StatusOr<Map> map = Parse(*stored, load_options_);
+        if (map.ok()) {
+          DescribeMap(*map).SerializeToString(&stored->info);
+        } else {
+          warnings.push_back(absl::StrCat("map ", stored->id, ": ", map.status().message()));
+        }
       }
-      DescribeMap(*map).SerializeToString(&stored->info);
-      if (absl::Status s = store_.PutMap(*stored); !s.ok()) return s;
+      // Version 0 numbers the map after the older maps of its name (the listing is oldest first),
+      // unless another replica numbered it meanwhile.
+      if (absl::StatusOr<int64_t> v = store_.PutMap(*stored); !v.ok()) return v.status();
     }
     if (batch->size() < static_cast<size_t>(kLoadBatch)) break;
     after = MapCursor{absl::ToUnixMicros(batch->back().created_at), batch->back().id};
@@ -79,13 +84,13 @@ absl::StatusOr<MapCatalog::UploadResult> MapCatalog::Upload(const std::string& n
   stored.format = SourceFormat(source);
 
   absl::MutexLock upload_lock(&upload_mu_);
-  absl::StatusOr<StoredMap> same = store_.FindMap(name, stored.content_hash);
-  if (same.ok()) {
-    absl::StatusOr<v1::MapInfo> info = InfoOf(*same);
+  absl::StatusOr<StoredMap> latest = store_.FindMapVersion(name, 0);
+  if (latest.ok() && latest->content_hash == stored.content_hash) {
+    absl::StatusOr<v1::MapInfo> info = InfoOf(*latest);
     if (!info.ok()) return info.status();
     return UploadResult{*std::move(info), false};
   }
-  if (!absl::IsNotFound(same.status())) return same.status();
+  if (!latest.ok() && !absl::IsNotFound(latest.status())) return latest.status();
 
   absl::StatusOr<Map> map = BuildMap(source, load_options_);
   if (!map.ok()) return map.status();
@@ -93,7 +98,9 @@ absl::StatusOr<MapCatalog::UploadResult> MapCatalog::Upload(const std::string& n
   // Microseconds: what the store keeps, so a map reads the same before and after a restart.
   stored.created_at = absl::FromUnixMicros(absl::ToUnixMicros(absl::Now()));
   DescribeMap(*map).SerializeToString(&stored.info);
-  if (absl::Status s = store_.PutMap(stored); !s.ok()) return s;
+  absl::StatusOr<int64_t> version = store_.PutMap(stored);
+  if (!version.ok()) return version.status();
+  stored.version = *version;
   absl::StatusOr<v1::MapInfo> info = InfoOf(stored);
   if (!info.ok()) return info.status();
   absl::MutexLock lock(&mu_);
@@ -158,6 +165,17 @@ absl::StatusOr<v1::MapInfo> MapCatalog::GetInfo(const std::string& id) const {
   return InfoOf(*stored);
 }
 
+absl::StatusOr<v1::MapInfo> MapCatalog::GetVersionInfo(const std::string& name,
+                                                       int64_t version) const {
+  if (absl::Status s = CheckMapName(name); !s.ok()) return s;
+  if (version < 0) {
+    return absl::InvalidArgumentError(absl::StrCat("version: ", version, "; must be >= 0"));
+  }
+  absl::StatusOr<StoredMap> stored = store_.FindMapVersion(name, version);
+  if (!stored.ok()) return stored.status();
+  return InfoOf(*stored);
+}
+
 absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const {
   absl::StatusOr<StoredMap> stored = store_.GetMap(id);
   if (!stored.ok()) return stored.status();
@@ -168,17 +186,29 @@ absl::StatusOr<v1::MapSource> MapCatalog::GetSource(const std::string& id) const
   return source;
 }
 
-absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size, size_t max_bytes,
+absl::StatusOr<MapCatalog::Page> MapCatalog::List(const std::string& name, int page_size,
+                                                  size_t max_bytes,
                                                   const std::string& page_token) const {
-  std::optional<MapCursor> after;
+  if (!name.empty()) {
+    if (absl::Status s = CheckMapName(name); !s.ok()) return s;
+  }
+  // A token continues the listing it came from: all maps by creation, or one name's versions.
+  const std::string scope = name.empty() ? kListScope : absl::StrCat(kListScope, "@", name);
+  std::optional<PageKey> after;
   if (!page_token.empty()) {
-    absl::StatusOr<PageKey> key = DecodePageToken(page_token, kListScope);
+    absl::StatusOr<PageKey> key = DecodePageToken(page_token, scope);
     if (!key.ok()) return key.status();
-    after = MapCursor{key->created_us, key->id};
+    after = *key;
   }
   // One more row than the page says whether another page follows.
-  absl::StatusOr<std::vector<StoredMap>> rows =
-      store_.ListMaps(after.has_value() ? &*after : nullptr, page_size + 1);
+  absl::StatusOr<std::vector<StoredMap>> rows;
+  if (name.empty()) {
+    const std::optional<MapCursor> cursor =
+        after.has_value() ? std::optional<MapCursor>({after->created_us, after->id}) : std::nullopt;
+    rows = store_.ListMaps(cursor.has_value() ? &*cursor : nullptr, page_size + 1);
+  } else {
+    rows = store_.ListMapVersions(name, after.has_value() ? after->created_us : 0, page_size + 1);
+  }
   if (!rows.ok()) return rows.status();
   Page page;
   size_t bytes = 0;
@@ -192,8 +222,8 @@ absl::StatusOr<MapCatalog::Page> MapCatalog::List(int page_size, size_t max_byte
   }
   if (used < rows->size() && used > 0) {
     const StoredMap& last = (*rows)[used - 1];
-    page.next_page_token =
-        EncodePageToken(PageKey{absl::ToUnixMicros(last.created_at), last.id}, kListScope);
+    const int64_t position = name.empty() ? absl::ToUnixMicros(last.created_at) : last.version;
+    page.next_page_token = EncodePageToken(PageKey{position, last.id}, scope);
   }
   return page;
 }

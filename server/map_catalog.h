@@ -39,8 +39,8 @@ class MapCatalog {
     v1::MapInfo info;
     bool created = false;
   };
-  // Parses, stores, then caches the map. Identical content under the same name returns the
-  // stored map.
+  // Parses, stores (as the next version of `name`), then caches the map. Content identical to
+  // the name's latest version returns that version.
   absl::StatusOr<UploadResult> Upload(const std::string& name, const v1::MapSource& source);
 
   // The map as stored now (NOT_FOUND naming the id when it is not), parsed: from the cache, or
@@ -49,14 +49,18 @@ class MapCatalog {
   // The description alone, without parsing.
   absl::StatusOr<v1::MapInfo> GetInfo(const std::string& id) const;
   absl::StatusOr<v1::MapSource> GetSource(const std::string& id) const;
+  // The description of version `version` of the map `name` (0: its latest); INVALID_ARGUMENT
+  // naming the field for a bad name or version, NOT_FOUND when there is no such version.
+  absl::StatusOr<v1::MapInfo> GetVersionInfo(const std::string& name, int64_t version) const;
   struct Page {
     std::vector<v1::MapInfo> maps;
     std::string next_page_token;  // empty on the last page
   };
-  // Oldest first (by creation time, then id), continuing after `page_token`: at most `page_size`
-  // maps and `max_bytes` serialized bytes (FitsPage). INVALID_ARGUMENT naming page_token for a
-  // token List did not issue.
-  absl::StatusOr<Page> List(int page_size, size_t max_bytes, const std::string& page_token) const;
+  // Oldest first (by creation time, then id), or with a `name` that map's versions by version,
+  // continuing after `page_token`: at most `page_size` maps and `max_bytes` serialized bytes
+  // (FitsPage). INVALID_ARGUMENT naming page_token for a token this listing did not issue.
+  absl::StatusOr<Page> List(const std::string& name, int page_size, size_t max_bytes,
+                            const std::string& page_token) const;
   absl::Status Delete(const std::string& id);
   // Maps in the store; -1 when the store cannot say.
   int64_t size() const;

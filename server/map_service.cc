@@ -39,11 +39,25 @@ grpc::ServerUnaryReactor* MapServiceImpl::GetMap(grpc::CallbackServerContext* co
                                                  const v1::GetMapRequest* request,
                                                  v1::GetMapResponse* response) {
   if (grpc::Status s = auth_.Check(*context); !s.ok()) return FinishUnary(context, s);
-  absl::StatusOr<v1::MapInfo> info = maps_.GetInfo(request->id());
+  if (!request->id().empty() && !request->name().empty()) {
+    return FinishUnary(context, ToGrpcStatus(absl::InvalidArgumentError(
+                                    "name: give the id or the name (with a version), not both")));
+  }
+  if (request->id().empty() && request->name().empty()) {
+    return FinishUnary(context, ToGrpcStatus(absl::InvalidArgumentError(
+                                    "id: required (or the map's name, with a version)")));
+  }
+  if (request->name().empty() && request->version() != 0) {
+    return FinishUnary(context, ToGrpcStatus(absl::InvalidArgumentError(
+                                    "version: needs the map's name (the id names one version)")));
+  }
+  absl::StatusOr<v1::MapInfo> info =
+      request->name().empty() ? maps_.GetInfo(request->id())
+                              : maps_.GetVersionInfo(request->name(), request->version());
   if (!info.ok()) return FinishUnary(context, ToGrpcStatus(info.status()));
   *response->mutable_map() = *std::move(info);
   if (request->include_source()) {
-    absl::StatusOr<v1::MapSource> source = maps_.GetSource(request->id());
+    absl::StatusOr<v1::MapSource> source = maps_.GetSource(response->map().id());
     if (!source.ok()) return FinishUnary(context, ToGrpcStatus(source.status()));
     *response->mutable_source() = std::move(*source);
   }
@@ -57,7 +71,7 @@ grpc::ServerUnaryReactor* MapServiceImpl::ListMaps(grpc::CallbackServerContext* 
   absl::StatusOr<int> page_size = ResolvePageSize(request->page_size());
   if (!page_size.ok()) return FinishUnary(context, ToGrpcStatus(page_size.status()));
   absl::StatusOr<MapCatalog::Page> page =
-      maps_.List(*page_size, PageByteBudget(config_), request->page_token());
+      maps_.List(request->name(), *page_size, PageByteBudget(config_), request->page_token());
   if (!page.ok()) return FinishUnary(context, ToGrpcStatus(page.status()));
   for (v1::MapInfo& info : page->maps) *response->add_maps() = std::move(info);
   response->set_next_page_token(page->next_page_token);

@@ -21,22 +21,28 @@ local function unindex_map(p, id)
   if not old[1] then return 0 end
   local member = old[1] .. ':' .. id
   redis.call('ZREM', p .. 'maps', member)
+  redis.call('ZREM', p .. 'mapversions:' .. old[3], id)
+  -- the content index that stores kept before maps had versions
   redis.call('ZREM', p .. 'mapkey:' .. old[2] .. ':' .. old[3], member)
   return redis.call('DEL', key)
 end
 )lua";
 
-// ARGV: prefix, id, name, format, content_hash, source, created_us (20 digits), info.
+// ARGV: prefix, id, name, format, content_hash, source, created_us (20 digits), info, version
+// (0: the stored one, else the name's next). Returns the version.
 const std::string& PutMapScript() {
   static const auto* script = new std::string(absl::StrCat(kUnindexMap, R"lua(
-local p, id = ARGV[1], ARGV[2]
+local p, id, name = ARGV[1], ARGV[2], ARGV[3]
+local version = tonumber(ARGV[9])
+if version == 0 then version = tonumber(redis.call('HGET', p .. 'map:' .. id, 'version') or '0') end
+if version == 0 then version = redis.call('HINCRBY', p .. 'mapnames', name, 1) end
 unindex_map(p, id)
 local member = ARGV[7] .. ':' .. id
-redis.call('HSET', p .. 'map:' .. id, 'name', ARGV[3], 'format', ARGV[4], 'content_hash', ARGV[5],
-           'source', ARGV[6], 'created_us', ARGV[7], 'info', ARGV[8])
+redis.call('HSET', p .. 'map:' .. id, 'name', name, 'format', ARGV[4], 'content_hash', ARGV[5],
+           'source', ARGV[6], 'created_us', ARGV[7], 'info', ARGV[8], 'version', version)
 redis.call('ZADD', p .. 'maps', 0, member)
-redis.call('ZADD', p .. 'mapkey:' .. ARGV[5] .. ':' .. ARGV[3], 0, member)
-return 1
+redis.call('ZADD', p .. 'mapversions:' .. name, version, id)
+return version
 )lua"));
   return *script;
 }
@@ -52,7 +58,7 @@ constexpr const char* kGetMaps = R"lua(
 local p = ARGV[1]
 local out = {}
 for i = 3, #ARGV do
-  local fields = {'name', 'format', 'content_hash', 'created_us', 'info'}
+  local fields = {'name', 'format', 'content_hash', 'created_us', 'info', 'version'}
   if ARGV[2] == '1' then fields[#fields + 1] = 'source' end
   out[#out + 1] = redis.call('HMGET', p .. 'map:' .. ARGV[i], unpack(fields))
 end
@@ -124,12 +130,13 @@ absl::StatusOr<std::unique_ptr<RedisStore>> RedisStore::Open(const RedisEndpoint
   return std::unique_ptr<RedisStore>(new RedisStore(std::move(*client), std::move(prefix)));
 }
 
-absl::Status RedisStore::PutMap(const StoredMap& map) {
-  return client_
-      ->Eval(PutMapScript(), {},
-             {prefix_, map.id, map.name, map.format, map.content_hash, map.source,
-              PaddedMicros(absl::ToUnixMicros(map.created_at)), map.info})
-      .status();
+absl::StatusOr<int64_t> RedisStore::PutMap(const StoredMap& map) {
+  absl::StatusOr<RedisReply> version = client_->Eval(
+      PutMapScript(), {},
+      {prefix_, map.id, map.name, map.format, map.content_hash, map.source,
+       PaddedMicros(absl::ToUnixMicros(map.created_at)), map.info, absl::StrCat(map.version)});
+  if (!version.ok()) return version.status();
+  return version->integer;
 }
 
 absl::StatusOr<std::vector<StoredMap>> RedisStore::GetMaps(const std::vector<std::string>& ids,
@@ -142,15 +149,17 @@ absl::StatusOr<std::vector<StoredMap>> RedisStore::GetMaps(const std::vector<std
   if (!reply.ok()) return reply.status();
   for (size_t i = 0; i < ids.size() && i < reply->elements.size(); ++i) {
     const std::vector<RedisReply>& f = reply->elements[i].elements;
-    if (f.size() < 5 || f[0].nil()) continue;  // deleted meanwhile
+    if (f.size() < 6 || f[0].nil()) continue;  // deleted meanwhile
     bool ok = true;
     StoredMap map{ids[i],
                   f[0].str,
                   f[1].str,
                   f[2].str,
-                  with_source && f.size() > 5 ? f[5].str : "",
+                  with_source && f.size() > 6 ? f[6].str : "",
                   absl::FromUnixMicros(ParseMicros(f[3], &ok)),
                   f[4].str};
+    // Maps stored before maps had versions have none (0).
+    if (!f[5].nil() && !absl::SimpleAtoi(f[5].str, &map.version)) ok = false;
     if (!ok) return Corrupt("map", ids[i]);
     maps.push_back(std::move(map));
   }
@@ -183,19 +192,30 @@ absl::StatusOr<std::vector<StoredMap>> RedisStore::ListMaps(const MapCursor* aft
   return GetMaps(ids, /*with_source=*/false);
 }
 
-absl::StatusOr<StoredMap> RedisStore::FindMap(const std::string& name,
-                                              const std::string& content_hash) {
-  absl::StatusOr<RedisReply> oldest =
-      client_->Command({"ZRANGE", absl::StrCat(prefix_, "mapkey:", content_hash, ":", name), "-",
-                        "+", "BYLEX", "LIMIT", "0", "1"});
-  if (!oldest.ok()) return oldest.status();
-  absl::StatusOr<StoredMap> map = oldest->elements.empty()
-                                      ? absl::NotFoundError("")
-                                      : GetMapInfo(IdOfMember(oldest->elements.front().str));
-  if (absl::IsNotFound(map.status())) {
-    return absl::NotFoundError(absl::StrCat("no map '", name, "' with that content"));
-  }
+absl::StatusOr<StoredMap> RedisStore::FindMapVersion(const std::string& name, int64_t version) {
+  const std::string key = absl::StrCat(prefix_, "mapversions:", name);
+  absl::StatusOr<RedisReply> ids =
+      version > 0
+          ? client_->Command({"ZRANGE", key, absl::StrCat(version), absl::StrCat(version),
+                              "BYSCORE", "LIMIT", "0", "1"})
+          : client_->Command({"ZRANGE", key, "+inf", "-inf", "BYSCORE", "REV", "LIMIT", "0", "1"});
+  if (!ids.ok()) return ids.status();
+  absl::StatusOr<StoredMap> map =
+      ids->elements.empty() ? absl::NotFoundError("") : GetMapInfo(ids->elements.front().str);
+  if (absl::IsNotFound(map.status())) return NoSuchMapVersion(name, version);
   return map;
+}
+
+absl::StatusOr<std::vector<StoredMap>> RedisStore::ListMapVersions(const std::string& name,
+                                                                   int64_t after_version,
+                                                                   int limit) {
+  absl::StatusOr<RedisReply> members = client_->Command(
+      {"ZRANGE", absl::StrCat(prefix_, "mapversions:", name), absl::StrCat("(", after_version),
+       "+inf", "BYSCORE", "LIMIT", "0", absl::StrCat(std::max(limit, 0))});
+  if (!members.ok()) return members.status();
+  std::vector<std::string> ids;
+  for (const RedisReply& m : members->elements) ids.push_back(m.str);
+  return GetMaps(ids, /*with_source=*/false);
 }
 
 absl::StatusOr<int64_t> RedisStore::CountMaps() {

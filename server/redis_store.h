@@ -12,10 +12,11 @@ namespace swarmplan::server {
 // same maps and job records. Each write is one script, so Redis applies it whole or not at all;
 // how much an acknowledged write can lose when Redis itself crashes is Redis's appendfsync
 // setting (deploy/README.md). Keys, all under `prefix`:
-//   map:ID           hash: name, format, content_hash, source, created_us, info
+//   map:ID           hash: name, format, content_hash, source, created_us, info, version
 //   maps             sorted set, every map as "CREATED_US(20 digits):ID" (lexicographic order
 //                    is creation order, then id)
-//   mapkey:HASH:NAME the same, per content hash and name
+//   mapversions:NAME sorted set, the ids of the maps named NAME scored by version
+//   mapnames         hash: the highest version each name ever had
 //   job:ID           hash: state, record, created_us, finished_us (when finished),
 //                    client_request_id
 //   jobs             sorted set, every job as "CREATED_US(20 digits):ID" (lexicographic order
@@ -30,12 +31,13 @@ class RedisStore final : public Store {
   static absl::StatusOr<std::unique_ptr<RedisStore>> Open(const RedisEndpoint& endpoint,
                                                           std::string prefix = "swarmplan:");
 
-  absl::Status PutMap(const StoredMap& map) override;
+  absl::StatusOr<int64_t> PutMap(const StoredMap& map) override;
   absl::StatusOr<StoredMap> GetMap(const std::string& id) override;
   absl::StatusOr<StoredMap> GetMapInfo(const std::string& id) override;
   absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) override;
-  absl::StatusOr<StoredMap> FindMap(const std::string& name,
-                                    const std::string& content_hash) override;
+  absl::StatusOr<StoredMap> FindMapVersion(const std::string& name, int64_t version) override;
+  absl::StatusOr<std::vector<StoredMap>> ListMapVersions(const std::string& name,
+                                                         int64_t after_version, int limit) override;
   absl::StatusOr<int64_t> CountMaps() override;
   absl::Status DeleteMap(const std::string& id) override;
   absl::Status PutJob(const StoredJob& job) override;

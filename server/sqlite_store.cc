@@ -26,14 +26,18 @@ CREATE TABLE IF NOT EXISTS jobs (
   created_us INTEGER NOT NULL,
   finished_us INTEGER
 );
+CREATE TABLE IF NOT EXISTS map_names (
+  name TEXT PRIMARY KEY,
+  last_version INTEGER NOT NULL
+);
 CREATE INDEX IF NOT EXISTS maps_created ON maps(created_us, id);
 CREATE INDEX IF NOT EXISTS jobs_finished ON jobs(finished_us);
 CREATE INDEX IF NOT EXISTS jobs_created ON jobs(created_us, id);
 )sql";
 
 // A map without its source; maps keep their MapInfo in a column (NULL: stored before there was
-// one).
-constexpr const char* kMapInfoColumns = "id, name, format, content_hash, created_us, info";
+// one) and their version (0: stored before maps had versions).
+constexpr const char* kMapInfoColumns = "id, name, format, content_hash, created_us, info, version";
 
 // Jobs also keep their client_request_id in a column (NULL: recorded before there was one).
 constexpr const char* kJobColumns = "id, state, record, created_us, finished_us, client_request_id";
@@ -80,15 +84,16 @@ class Statement {
 int64_t ToMicros(absl::Time t) { return absl::ToUnixMicros(t); }
 absl::Time FromMicros(int64_t us) { return absl::FromUnixMicros(us); }
 
-// A row of "id, name, format, content_hash, source, created_us, info".
+// A row of "id, name, format, content_hash, source, created_us, info, version".
 StoredMap ReadMap(const Statement& s) {
   return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), s.Text(4), FromMicros(s.Int(5)),
-                   s.Text(6)};
+                   s.Text(6), s.Int(7)};
 }
 
 // A row of kMapInfoColumns.
 StoredMap ReadMapInfo(const Statement& s) {
-  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), "", FromMicros(s.Int(4)), s.Text(5)};
+  return StoredMap{s.Text(0), s.Text(1), s.Text(2), s.Text(3), "", FromMicros(s.Int(4)),
+                   s.Text(5), s.Int(6)};
 }
 
 // Every row `s` yields, read by `read`.
@@ -174,16 +179,49 @@ absl::Status SqliteStore::AddColumn(const char* table, const char* column, const
 absl::Status SqliteStore::Migrate() {
   if (absl::Status s = AddColumn("jobs", "client_request_id", "TEXT"); !s.ok()) return s;
   if (absl::Status s = AddColumn("maps", "info", "BLOB"); !s.ok()) return s;
+  if (absl::Status s = AddColumn("maps", "version", "INTEGER NOT NULL DEFAULT 0"); !s.ok()) {
+    return s;
+  }
   return Exec(
       "CREATE INDEX IF NOT EXISTS jobs_client_request_id ON jobs(client_request_id);"
-      "CREATE INDEX IF NOT EXISTS maps_name_hash ON maps(name, content_hash);");
+      "DROP INDEX IF EXISTS maps_name_hash;"
+      "CREATE INDEX IF NOT EXISTS maps_name_version ON maps(name, version);");
 }
 
-absl::Status SqliteStore::PutMap(const StoredMap& map) {
+absl::StatusOr<int64_t> SqliteStore::VersionFor(const StoredMap& map) {
+  if (map.version != 0) return map.version;
+  Statement stored(db_, "SELECT version FROM maps WHERE id = ? AND version > 0");
+  if (absl::Status st = stored.status(); !st.ok()) return st;
+  stored.BindText(1, map.id);
+  const int rc = stored.Step();
+  if (rc == SQLITE_ROW) return stored.Int(0);
+  if (rc != SQLITE_DONE) return stored.Error("step");
+  Statement next(db_,
+                 "INSERT INTO map_names(name, last_version) VALUES (?, 1) ON CONFLICT(name) DO "
+                 "UPDATE SET last_version = last_version + 1 RETURNING last_version");
+  if (absl::Status st = next.status(); !st.ok()) return st;
+  next.BindText(1, map.name);
+  if (next.Step() != SQLITE_ROW) return next.Error("step");
+  const int64_t version = next.Int(0);
+  if (next.Step() != SQLITE_DONE) return next.Error("step");
+  return version;
+}
+
+absl::StatusOr<int64_t> SqliteStore::PutMap(const StoredMap& map) {
   absl::MutexLock lock(&mu_);
+  // One transaction: the version is taken and used, or neither (also against other processes).
+  if (absl::Status st = Exec("BEGIN IMMEDIATE;"); !st.ok()) return st;
+  absl::StatusOr<int64_t> version = PutMapLocked(map);
+  if (absl::Status st = Exec(version.ok() ? "COMMIT;" : "ROLLBACK;"); !st.ok()) return st;
+  return version;
+}
+
+absl::StatusOr<int64_t> SqliteStore::PutMapLocked(const StoredMap& map) {
+  absl::StatusOr<int64_t> version = VersionFor(map);
+  if (!version.ok()) return version.status();
   Statement s(db_,
               "INSERT OR REPLACE INTO maps(id, name, format, content_hash, source, created_us, "
-              "info) VALUES (?, ?, ?, ?, ?, ?, ?)");
+              "info, version) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, map.id);
   s.BindText(2, map.name);
@@ -196,13 +234,15 @@ absl::Status SqliteStore::PutMap(const StoredMap& map) {
   } else {
     s.Bind(7, map.info);
   }
-  return s.Done();
+  s.Bind(8, *version);
+  if (absl::Status st = s.Done(); !st.ok()) return st;
+  return *version;
 }
 
 absl::StatusOr<StoredMap> SqliteStore::GetMap(const std::string& id) {
   absl::MutexLock lock(&mu_);
   Statement s(db_,
-              "SELECT id, name, format, content_hash, source, created_us, info FROM maps "
+              "SELECT id, name, format, content_hash, source, created_us, info, version FROM maps "
               "WHERE id = ?");
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, id);
@@ -239,21 +279,34 @@ absl::StatusOr<std::vector<StoredMap>> SqliteStore::ListMaps(const MapCursor* af
   return ReadAll(s, ReadMapInfo);
 }
 
-absl::StatusOr<StoredMap> SqliteStore::FindMap(const std::string& name,
-                                               const std::string& content_hash) {
+absl::StatusOr<StoredMap> SqliteStore::FindMapVersion(const std::string& name, int64_t version) {
   absl::MutexLock lock(&mu_);
-  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns,
-                                " FROM maps WHERE name = ? AND content_hash = ? "
-                                "ORDER BY created_us, id LIMIT 1")
+  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns, " FROM maps WHERE name = ?",
+                                version > 0 ? " AND version = ?" : "",
+                                " ORDER BY version DESC, created_us DESC, id DESC LIMIT 1")
                        .c_str());
   if (absl::Status st = s.status(); !st.ok()) return st;
   s.BindText(1, name);
-  s.BindText(2, content_hash);
+  if (version > 0) s.Bind(2, version);
   const int rc = s.Step();
   if (rc == SQLITE_ROW) return ReadMapInfo(s);
-  if (rc == SQLITE_DONE)
-    return absl::NotFoundError(absl::StrCat("no map '", name, "' with that content"));
+  if (rc == SQLITE_DONE) return NoSuchMapVersion(name, version);
   return s.Error("step");
+}
+
+absl::StatusOr<std::vector<StoredMap>> SqliteStore::ListMapVersions(const std::string& name,
+                                                                    int64_t after_version,
+                                                                    int limit) {
+  absl::MutexLock lock(&mu_);
+  Statement s(db_, absl::StrCat("SELECT ", kMapInfoColumns,
+                                " FROM maps WHERE name = ? AND version > ? ORDER BY version, id "
+                                "LIMIT ?")
+                       .c_str());
+  if (absl::Status st = s.status(); !st.ok()) return st;
+  s.BindText(1, name);
+  s.Bind(2, after_version);
+  s.Bind(3, static_cast<int64_t>(limit));
+  return ReadAll(s, ReadMapInfo);
 }
 
 absl::StatusOr<int64_t> SqliteStore::CountMaps() {

@@ -18,12 +18,13 @@ class SqliteStore final : public Store {
   static absl::StatusOr<std::unique_ptr<SqliteStore>> Open(const std::string& data_dir);
   ~SqliteStore() override;
 
-  absl::Status PutMap(const StoredMap& map) override;
+  absl::StatusOr<int64_t> PutMap(const StoredMap& map) override;
   absl::StatusOr<StoredMap> GetMap(const std::string& id) override;
   absl::StatusOr<StoredMap> GetMapInfo(const std::string& id) override;
   absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) override;
-  absl::StatusOr<StoredMap> FindMap(const std::string& name,
-                                    const std::string& content_hash) override;
+  absl::StatusOr<StoredMap> FindMapVersion(const std::string& name, int64_t version) override;
+  absl::StatusOr<std::vector<StoredMap>> ListMapVersions(const std::string& name,
+                                                         int64_t after_version, int limit) override;
   absl::StatusOr<int64_t> CountMaps() override;
   absl::Status DeleteMap(const std::string& id) override;
   absl::Status PutJob(const StoredJob& job) override;
@@ -45,6 +46,9 @@ class SqliteStore final : public Store {
   // Adds `column` (with `type`) to `table` unless it has it.
   absl::Status AddColumn(const char* table, const char* column, const char* type)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  absl::StatusOr<int64_t> PutMapLocked(const StoredMap& map) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
+  // The version `map` is to be stored with (see Store::PutMap).
+  absl::StatusOr<int64_t> VersionFor(const StoredMap& map) ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);
   // Runs `select` (ids of jobs to delete, bound by `bind`) and deletes those jobs.
   absl::StatusOr<std::vector<std::string>> DeleteSelected(const char* select, int64_t value)
       ABSL_EXCLUSIVE_LOCKS_REQUIRED(mu_);

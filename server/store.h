@@ -5,6 +5,7 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
+#include "absl/strings/str_cat.h"
 #include "absl/time/time.h"
 
 namespace swarmplan::server {
@@ -21,6 +22,9 @@ struct StoredMap {
   // Serialized swarmplan.v1.MapInfo of the parsed map; "" for a map stored before the store kept
   // it (MapCatalog::Load fills it in).
   std::string info;
+  // The map's version among the maps named `name`; 0 for a map stored before maps had versions
+  // (MapCatalog::Load numbers them).
+  int64_t version = 0;
 };
 
 // Where a map listing continues: after the map created at `created_us` with `id`.
@@ -47,6 +51,12 @@ struct JobCursor {
   std::string id;
 };
 
+// FindMapVersion's NOT_FOUND.
+inline absl::Status NoSuchMapVersion(const std::string& name, int64_t version) {
+  return absl::NotFoundError(version > 0 ? absl::StrCat("map '", name, "' has no version ", version)
+                                         : absl::StrCat("no map named '", name, "'"));
+}
+
 // Durable storage of maps and jobs. A write that returned OK survives a crash of the process.
 // Thread-safe. The embedded implementation is SQLite (sqlite_store.h), the shared one Redis
 // (redis_store.h); store_url.h opens the one --store names.
@@ -54,8 +64,11 @@ class Store {
  public:
   virtual ~Store() = default;
 
-  // Inserts or replaces the map with this id.
-  virtual absl::Status PutMap(const StoredMap& map) = 0;
+  // Inserts or replaces the map with this id and returns its version. A map put with version 0
+  // keeps the version it is stored with, or, when it has none, gets the next version of its name
+  // (one more than any map of that name ever had), atomically also across processes sharing the
+  // store.
+  virtual absl::StatusOr<int64_t> PutMap(const StoredMap& map) = 0;
   // NOT_FOUND when absent.
   virtual absl::StatusOr<StoredMap> GetMap(const std::string& id) = 0;
   // The map without its source; NOT_FOUND when absent.
@@ -63,9 +76,13 @@ class Store {
   // Up to `limit` maps without their sources, oldest first (created_us, then id), after `after`
   // when given.
   virtual absl::StatusOr<std::vector<StoredMap>> ListMaps(const MapCursor* after, int limit) = 0;
-  // The oldest map with this name and content hash, without its source; NOT_FOUND when none.
-  virtual absl::StatusOr<StoredMap> FindMap(const std::string& name,
-                                            const std::string& content_hash) = 0;
+  // The map with this name and version (0: the highest stored), without its source; NOT_FOUND
+  // when none.
+  virtual absl::StatusOr<StoredMap> FindMapVersion(const std::string& name, int64_t version) = 0;
+  // Up to `limit` maps named `name` without their sources, by version, after `after_version`.
+  virtual absl::StatusOr<std::vector<StoredMap>> ListMapVersions(const std::string& name,
+                                                                 int64_t after_version,
+                                                                 int limit) = 0;
   virtual absl::StatusOr<int64_t> CountMaps() = 0;
   // NOT_FOUND when absent.
   virtual absl::Status DeleteMap(const std::string& id) = 0;

@@ -1,5 +1,5 @@
-// MapService over loopback: upload (structured and files), idempotent re-upload, get, list
-// with pagination, delete.
+// MapService over loopback: upload (structured and files), idempotent re-upload, versions, get,
+// list with pagination, delete.
 #include "tests/integration/test_server.h"
 
 namespace swarmplan::testing {
@@ -51,6 +51,124 @@ TEST_F(MapsTest, ReuploadingIdenticalContentUnderTheSameNameIsIdempotent) {
   EXPECT_EQ(second.map().id(), first.map().id());
   EXPECT_TRUE(renamed.created());
   EXPECT_NE(renamed.map().id(), first.map().id());
+}
+
+v1::MapInfo GetVersion(TestServer& server, const std::string& name, int64_t version,
+                       grpc::StatusCode expected = grpc::StatusCode::OK) {
+  v1::GetMapRequest request;
+  request.set_name(name);
+  request.set_version(version);
+  v1::GetMapResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = server.maps().GetMap(&context, request, &response);
+  EXPECT_EQ(status.error_code(), expected) << status.error_message();
+  return response.map();
+}
+
+std::vector<int64_t> ListedVersions(TestServer& server, const std::string& name, int page_size) {
+  std::vector<int64_t> versions;
+  v1::ListMapsRequest request;
+  request.set_name(name);
+  request.set_page_size(page_size);
+  do {
+    v1::ListMapsResponse page;
+    grpc::ClientContext context;
+    const grpc::Status status = server.maps().ListMaps(&context, request, &page);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+    if (!status.ok()) break;
+    for (const v1::MapInfo& map : page.maps()) {
+      EXPECT_EQ(map.name(), name);
+      versions.push_back(map.version());
+    }
+    request.set_page_token(page.next_page_token());
+  } while (!request.page_token().empty());
+  return versions;
+}
+
+TEST_F(MapsTest, NewContentUnderANameIsItsNextVersionAndJobsKeepTheVersionTheyPlannedOn) {
+  const std::string first = server_.UploadGrid("floor", 8, 4);
+  const v1::Job on_first = server_.SubmitOk(TestServer::Request(first, "astar", 7.5));
+  ASSERT_EQ(server_.WaitUntilFinal(on_first.id()).state(), v1::JOB_STATE_SUCCEEDED);
+
+  // A wall across the floor: the second version, with its own id.
+  const std::string second = server_.UploadGrid("floor", 8, 4, /*wall_x=*/4);
+  EXPECT_NE(second, first);
+  const v1::Job on_second = server_.SubmitOk(TestServer::Request(second, "astar", 7.5));
+  const v1::Job second_done = server_.WaitUntilFinal(on_second.id());
+  ASSERT_EQ(second_done.state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_EQ(second_done.map_name(), "floor");
+  EXPECT_EQ(second_done.map_version(), 2);
+
+  // The first job still reads version 1 and its straight path, after the newer upload.
+  const v1::Job first_done = server_.GetJob(on_first.id());
+  EXPECT_EQ(first_done.request().map_id(), first);
+  EXPECT_EQ(first_done.map_name(), "floor");
+  EXPECT_EQ(first_done.map_version(), 1);
+  EXPECT_NEAR(first_done.result().raw_metrics().length(), 7.0, 1e-9);
+  EXPECT_GT(second_done.result().raw_metrics().length(), 7.5);
+
+  EXPECT_EQ(GetVersion(server_, "floor", 0).id(), second);
+  EXPECT_EQ(GetVersion(server_, "floor", 1).id(), first);
+  EXPECT_EQ(GetVersion(server_, "floor", 1).version(), 1);
+  GetVersion(server_, "floor", 3, grpc::StatusCode::NOT_FOUND);
+  GetVersion(server_, "ceiling", 0, grpc::StatusCode::NOT_FOUND);
+  GetVersion(server_, "floor", -1, grpc::StatusCode::INVALID_ARGUMENT);
+
+  // The latest version's content again is idempotent; an older version's content becomes the
+  // next version (a rollback).
+  EXPECT_EQ(server_.UploadGrid("floor", 8, 4, /*wall_x=*/4), second);
+  const std::string rolled_back = server_.UploadGrid("floor", 8, 4);
+  EXPECT_NE(rolled_back, first);
+  EXPECT_EQ(GetVersion(server_, "floor", 0).version(), 3);
+  EXPECT_EQ(ListedVersions(server_, "floor", 1), (std::vector<int64_t>{1, 2, 3}));
+
+  // Deleting the latest makes the one before it the latest; numbers are not reused.
+  v1::DeleteMapRequest remove;
+  remove.set_id(rolled_back);
+  v1::DeleteMapResponse removed;
+  grpc::ClientContext delete_context;
+  ASSERT_TRUE(server_.maps().DeleteMap(&delete_context, remove, &removed).ok());
+  EXPECT_EQ(GetVersion(server_, "floor", 0).id(), second);
+  server_.UploadGrid("floor", 8, 4);
+  EXPECT_EQ(ListedVersions(server_, "floor", 2), (std::vector<int64_t>{1, 2, 4}));
+}
+
+TEST_F(MapsTest, GetMapTakesAnIdOrANameAndListingTokensKeepTheirFilter) {
+  const std::string id = server_.UploadGrid("dock", 4, 4);
+  server_.UploadGrid("dock", 4, 4, /*wall_x=*/1);
+  auto get = [&](const std::string& map_id, const std::string& name, int64_t version) {
+    v1::GetMapRequest request;
+    request.set_id(map_id);
+    request.set_name(name);
+    request.set_version(version);
+    v1::GetMapResponse response;
+    grpc::ClientContext context;
+    return server_.maps().GetMap(&context, request, &response);
+  };
+  const grpc::Status both = get(id, "dock", 0);
+  EXPECT_EQ(both.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(both.error_message().find("name"), std::string::npos) << both.error_message();
+  const grpc::Status neither = get("", "", 0);
+  EXPECT_EQ(neither.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(neither.error_message().find("id"), std::string::npos) << neither.error_message();
+  const grpc::Status version_alone = get(id, "", 2);
+  EXPECT_EQ(version_alone.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(version_alone.error_message().find("version"), std::string::npos);
+
+  v1::ListMapsRequest by_name;
+  by_name.set_name("dock");
+  by_name.set_page_size(1);
+  v1::ListMapsResponse page;
+  grpc::ClientContext c1;
+  ASSERT_TRUE(server_.maps().ListMaps(&c1, by_name, &page).ok());
+  ASSERT_FALSE(page.next_page_token().empty());
+  v1::ListMapsRequest all;
+  all.set_page_token(page.next_page_token());
+  v1::ListMapsResponse refused;
+  grpc::ClientContext c2;
+  const grpc::Status other_filter = server_.maps().ListMaps(&c2, all, &refused);
+  EXPECT_EQ(other_filter.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_NE(other_filter.error_message().find("page_token"), std::string::npos);
 }
 
 TEST_F(MapsTest, GetMapReturnsTheDescriptionAndOnRequestTheSource) {

@@ -6,9 +6,11 @@
 #include <memory>
 #include <string>
 
+#include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "google/protobuf/util/message_differencer.h"
 #include "server/config.h"
+#include "server/redis_client.h"
 #include "server/redis_store.h"
 #include "server/sqlite_store.h"
 #include "server/store_url.h"
@@ -77,7 +79,7 @@ std::vector<std::string> MapIds(const std::vector<StoredMap>& maps) {
   return ids;
 }
 
-TEST_P(StoreTest, MapsArePutReadListedOldestFirstFoundByNameAndContentAndDeleted) {
+TEST_P(StoreTest, MapsArePutReadListedOldestFirstAndDeleted) {
   const std::string source("binary\0source", 13);
   ASSERT_TRUE(store().PutMap({"map-b", "second", "ascii", "h2", source, kT0, "info-b"}).ok());
   ASSERT_TRUE(store().PutMap({"map-a", "first", "ascii", "h1", "s1", kT0, "info-a"}).ok());
@@ -107,27 +109,60 @@ TEST_P(StoreTest, MapsArePutReadListedOldestFirstFoundByNameAndContentAndDeleted
   EXPECT_TRUE(store().ListMaps(nullptr, 10)->front().source.empty());
   EXPECT_EQ(*store().CountMaps(), 4);
 
-  // The oldest map of that name and content.
-  absl::StatusOr<StoredMap> found = store().FindMap("first", "h1");
-  ASSERT_TRUE(found.ok()) << found.status();
-  EXPECT_EQ(found->id, "map-a");
-  EXPECT_TRUE(absl::IsNotFound(store().FindMap("first", "h2").status()));
-  EXPECT_TRUE(absl::IsNotFound(store().FindMap("second", "h1").status()));
-
-  // Put again: the map is replaced, and found under its new name only.
+  // Put again: the map is replaced.
   ASSERT_TRUE(store().PutMap({"map-a", "renamed", "ascii", "h1", "s1", kT0, "info-a"}).ok());
-  EXPECT_EQ(store().FindMap("first", "h1")->id, "map-d");
-  EXPECT_EQ(store().FindMap("renamed", "h1")->id, "map-a");
+  EXPECT_EQ(store().GetMapInfo("map-a")->name, "renamed");
   EXPECT_EQ(*store().CountMaps(), 4);
 
   EXPECT_TRUE(store().DeleteMap("map-a").ok());
   EXPECT_TRUE(absl::IsNotFound(store().DeleteMap("map-a")));
   EXPECT_TRUE(absl::IsNotFound(store().GetMap("map-a").status()));
   EXPECT_TRUE(absl::IsNotFound(store().GetMapInfo("map-a").status()));
-  EXPECT_TRUE(absl::IsNotFound(store().FindMap("renamed", "h1").status()));
   EXPECT_EQ(MapIds(*store().ListMaps(nullptr, 10)),
             (std::vector<std::string>{"map-c", "map-b", "map-d"}));
   EXPECT_EQ(*store().CountMaps(), 3);
+}
+
+std::vector<int64_t> Versions(const std::vector<StoredMap>& maps) {
+  std::vector<int64_t> versions;
+  for (const StoredMap& m : maps) versions.push_back(m.version);
+  return versions;
+}
+
+TEST_P(StoreTest, EachNameNumbersItsVersionsAndNeverReusesANumber) {
+  auto put = [&](const std::string& id, const std::string& name, int64_t version = 0) {
+    absl::StatusOr<int64_t> v =
+        store().PutMap({id, name, "ascii", "h-" + id, "s", kT0, "i", version});
+    EXPECT_TRUE(v.ok()) << v.status();
+    return v.value_or(-1);
+  };
+  EXPECT_EQ(put("map-1", "dock"), 1);
+  EXPECT_EQ(put("map-2", "dock"), 2);
+  EXPECT_EQ(put("map-x", "yard"), 1);
+  EXPECT_EQ(put("map-3", "dock"), 3);
+  // Put again with version 0, the map keeps its version; a stated version is stored as given.
+  EXPECT_EQ(put("map-2", "dock"), 2);
+  EXPECT_EQ(store().GetMap("map-2")->version, 2);
+  EXPECT_EQ(store().GetMapInfo("map-3")->version, 3);
+
+  EXPECT_EQ(store().FindMapVersion("dock", 0)->id, "map-3");
+  EXPECT_EQ(store().FindMapVersion("dock", 2)->id, "map-2");
+  EXPECT_EQ(store().FindMapVersion("yard", 0)->id, "map-x");
+  EXPECT_TRUE(store().FindMapVersion("dock", 2)->source.empty());
+  EXPECT_TRUE(absl::IsNotFound(store().FindMapVersion("dock", 4).status()));
+  EXPECT_TRUE(absl::IsNotFound(store().FindMapVersion("dockyard", 0).status()));
+  EXPECT_EQ(Versions(*store().ListMapVersions("dock", 0, 10)), (std::vector<int64_t>{1, 2, 3}));
+  EXPECT_EQ(MapIds(*store().ListMapVersions("dock", 1, 1)), std::vector<std::string>{"map-2"});
+
+  // Deleting the latest makes the one before it the latest; its number is not given again.
+  ASSERT_TRUE(store().DeleteMap("map-3").ok());
+  EXPECT_EQ(store().FindMapVersion("dock", 0)->id, "map-2");
+  EXPECT_TRUE(absl::IsNotFound(store().FindMapVersion("dock", 3).status()));
+  EXPECT_EQ(put("map-4", "dock"), 4);
+  EXPECT_EQ(Versions(*store().ListMapVersions("dock", 0, 10)), (std::vector<int64_t>{1, 2, 4}));
+  Reopen();
+  EXPECT_EQ(put("map-5", "dock"), 5);
+  EXPECT_EQ(store().FindMapVersion("dock", 0)->id, "map-5");
 }
 
 TEST_P(StoreTest, AJobPutAgainReplacesItsRecordAndMovesBetweenStates) {
@@ -329,6 +364,72 @@ TEST_F(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis
       google::protobuf::util::MessageDifferencer::Equals(again.result(), finished.result()));
 }
 
+TEST_F(RedisStoreServerTest, ReplicasNumberTheVersionsOfANameTogether) {
+  TempDir dir_b;
+  TestServer a(dir_.path(), config_);
+  TestServer b(dir_b.path(), config_);
+  const std::string first = a.UploadGrid("bay", 6, 4);
+  const std::string second = b.UploadGrid("bay", 6, 4, /*wall_x=*/2);
+  const std::string third = a.UploadGrid("bay", 6, 4, /*wall_x=*/3);
+  // Replica b sees a's newest version as the latest, and numbers the next one after it.
+  EXPECT_EQ(b.UploadGrid("bay", 6, 4, /*wall_x=*/3), third);
+  const std::string fourth = b.UploadGrid("bay", 6, 4);
+  v1::ListMapsRequest request;
+  request.set_name("bay");
+  v1::ListMapsResponse versions;
+  grpc::ClientContext context;
+  ASSERT_TRUE(a.maps().ListMaps(&context, request, &versions).ok());
+  ASSERT_EQ(versions.maps_size(), 4);
+  const std::vector<std::string> ids = {first, second, third, fourth};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(versions.maps(i).id(), ids[i]);
+    EXPECT_EQ(versions.maps(i).version(), i + 1);
+  }
+}
+
+TEST_F(RedisStoreServerTest, MapsStoredWithoutAVersionAreNumberedInUploadOrderAtStart) {
+  v1::MapSource source;
+  v1::OccupancyGridData* grid = source.mutable_structured()->mutable_occupancy_grid();
+  grid->set_width(5);
+  grid->set_height(3);
+  grid->set_cells(std::string(15, '\0'));
+  {
+    // What a store kept before maps had versions: no version field, no per-name index.
+    absl::StatusOr<std::unique_ptr<server::RedisClient>> redis =
+        server::RedisClient::Connect(Endpoint());
+    ASSERT_TRUE(redis.ok()) << redis.status();
+    for (const auto& [id, created] : {std::pair{"map-late", "00001800000000000002"},
+                                      std::pair{"map-early", "00001800000000000001"}}) {
+      ASSERT_TRUE((*redis)
+                      ->Command({"HSET", std::string("swarmplan:map:") + id, "name", "legacy",
+                                 "format", "structured", "content_hash", id, "source",
+                                 source.SerializeAsString(), "created_us", created})
+                      .ok());
+      ASSERT_TRUE(
+          (*redis)->Command({"ZADD", "swarmplan:maps", "0", absl::StrCat(created, ":", id)}).ok());
+    }
+  }
+  TestServer server(dir_.path(), config_);
+  v1::ListMapsRequest request;
+  request.set_name("legacy");
+  v1::ListMapsResponse versions;
+  grpc::ClientContext context;
+  ASSERT_TRUE(server.maps().ListMaps(&context, request, &versions).ok());
+  ASSERT_EQ(versions.maps_size(), 2);
+  EXPECT_EQ(versions.maps(0).id(), "map-early");
+  EXPECT_EQ(versions.maps(0).version(), 1);
+  EXPECT_EQ(versions.maps(0).width(), 5);
+  EXPECT_EQ(versions.maps(1).id(), "map-late");
+  EXPECT_EQ(versions.maps(1).version(), 2);
+  EXPECT_EQ(server.UploadGrid("legacy", 7, 3), server.UploadGrid("legacy", 7, 3));
+  v1::GetMapRequest latest;
+  latest.set_name("legacy");
+  v1::GetMapResponse response;
+  grpc::ClientContext get_context;
+  ASSERT_TRUE(server.maps().GetMap(&get_context, latest, &response).ok());
+  EXPECT_EQ(response.map().version(), 3);
+}
+
 TEST_F(RedisStoreServerTest, AMapUploadedOnOneReplicaIsPlannedOnFromAnotherAndDeletedForBoth) {
   TempDir dir_b;
   TestServer a(dir_.path(), config_);
@@ -399,7 +500,7 @@ TEST_F(RedisStoreServerTest, WhileRedisIsDownCallsAnswerUnavailableAndTheServerR
   EXPECT_EQ(server.WaitUntilFinal(job.id()).state(), v1::JOB_STATE_SUCCEEDED);
 }
 
-TEST(SqliteStoreTest, MapsStoredWithoutADescriptionAreDescribedAtStartAndPlannedOn) {
+TEST(SqliteStoreTest, MapsStoredWithoutADescriptionOrVersionAreDescribedAndNumberedAtStart) {
   TempDir dir;
   v1::MapSource source;
   v1::OccupancyGridData* grid = source.mutable_structured()->mutable_occupancy_grid();
@@ -417,16 +518,18 @@ TEST(SqliteStoreTest, MapsStoredWithoutADescriptionAreDescribedAtStartAndPlanned
                            "created_us INTEGER NOT NULL);",
                            nullptr, nullptr, nullptr),
               SQLITE_OK);
-    sqlite3_stmt* insert = nullptr;
-    ASSERT_EQ(sqlite3_prepare_v2(db,
-                                 "INSERT INTO maps VALUES ('map-old', 'old', 'structured', "
-                                 "'hash', ?, 1800000000000000)",
-                                 -1, &insert, nullptr),
-              SQLITE_OK);
-    const std::string bytes = source.SerializeAsString();
-    sqlite3_bind_blob(insert, 1, bytes.data(), static_cast<int>(bytes.size()), SQLITE_TRANSIENT);
-    ASSERT_EQ(sqlite3_step(insert), SQLITE_DONE);
-    sqlite3_finalize(insert);
+    // Two uploads under one name, the newer one first in the table.
+    for (const char* row : {"('map-new', 'old', 'structured', 'hash2', ?, 1800000000000001)",
+                            "('map-old', 'old', 'structured', 'hash', ?, 1800000000000000)"}) {
+      sqlite3_stmt* insert = nullptr;
+      ASSERT_EQ(sqlite3_prepare_v2(db, (std::string("INSERT INTO maps VALUES ") + row).c_str(), -1,
+                                   &insert, nullptr),
+                SQLITE_OK);
+      const std::string bytes = source.SerializeAsString();
+      sqlite3_bind_blob(insert, 1, bytes.data(), static_cast<int>(bytes.size()), SQLITE_TRANSIENT);
+      ASSERT_EQ(sqlite3_step(insert), SQLITE_DONE);
+      sqlite3_finalize(insert);
+    }
     sqlite3_close(db);
   }
   TestServer server(dir.path());
@@ -434,11 +537,15 @@ TEST(SqliteStoreTest, MapsStoredWithoutADescriptionAreDescribedAtStartAndPlanned
   v1::ListMapsResponse maps;
   grpc::ClientContext context;
   ASSERT_TRUE(server.maps().ListMaps(&context, list, &maps).ok());
-  ASSERT_EQ(maps.maps_size(), 1);
+  ASSERT_EQ(maps.maps_size(), 2);
   EXPECT_EQ(maps.maps(0).id(), "map-old");
   EXPECT_EQ(maps.maps(0).kind(), v1::MAP_KIND_OCCUPANCY_GRID);
   EXPECT_EQ(maps.maps(0).width(), 12);
   EXPECT_EQ(maps.maps(0).height(), 6);
+  // Numbered in upload order.
+  EXPECT_EQ(maps.maps(0).version(), 1);
+  EXPECT_EQ(maps.maps(1).id(), "map-new");
+  EXPECT_EQ(maps.maps(1).version(), 2);
   const v1::Job job = server.SubmitOk(TestServer::Request("map-old", "astar", 11.5));
   EXPECT_EQ(server.WaitUntilFinal(job.id()).state(), v1::JOB_STATE_SUCCEEDED);
 }

@@ -15,7 +15,7 @@ from google.protobuf import timestamp_pb2 as google_dot_protobuf_dot_timestamp__
 from swarmplan_client._proto.swarmplan.v1 import common_pb2 as swarmplan_dot_v1_dot_common__pb2
 
 
-DESCRIPTOR = _descriptor_pool.Default().AddSerializedFile(b'\n\x17swarmplan/v1/maps.proto\x12\x0cswarmplan.v1\x1a\x1fgoogle/protobuf/timestamp.proto\x1a\x19swarmplan/v1/common.proto\"z\n\x11OccupancyGridData\x12\r\n\x05width\x18\x01 \x01(\x05\x12\x0e\n\x06height\x18\x02 \x01(\x05\x12\r\n\x05\x63\x65lls\x18\x03 \x01(\x0c\x12\x12\n\nresolution\x18\x04 \x01(\x01\x12#\n\x06origin\x18\x05 \x01(\x0b\x32\x13.swarmplan.v1.Point\"=\n\x06\x43ircle\x12#\n\x06\x63\x65nter\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x0e\n\x06radius\x18\x02 \x01(\x01\"0\n\x07Polygon\x12%\n\x08vertices\x18\x01 \x03(\x0b\x32\x13.swarmplan.v1.Point\"\xa4\x01\n\x0eShapeWorldData\x12 \n\x03min\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12 \n\x03max\x18\x02 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12%\n\x07\x63ircles\x18\x03 \x03(\x0b\x32\x14.swarmplan.v1.Circle\x12\'\n\x08polygons\x18\x04 \x03(\x0b\x32\x15.swarmplan.v1.Polygon\"\x96\x01\n\x0bTerrainData\x12\r\n\x05width\x18\x01 \x01(\x05\x12\r\n\x05\x64\x65pth\x18\x02 \x01(\x05\x12\x0f\n\x07heights\x18\x03 \x03(\x01\x12\x11\n\tcell_size\x18\x04 \x01(\x01\x12#\n\x06origin\x18\x05 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x14\n\x07\x63\x65iling\x18\x06 \x01(\x01H\x00\x88\x01\x01\x42\n\n\x08_ceiling\"\xb5\x01\n\rStructuredMap\x12\x39\n\x0eoccupancy_grid\x18\x01 \x01(\x0b\x32\x1f.swarmplan.v1.OccupancyGridDataH\x00\x12\x33\n\x0bshape_world\x18\x02 \x01(\x0b\x32\x1c.swarmplan.v1.ShapeWorldDataH\x00\x12,\n\x07terrain\x18\x03 \x01(\x0b\x32\x19.swarmplan.v1.TerrainDataH\x00\x42\x06\n\x04kind\"(\n\x07MapFile\x12\x0c\n\x04name\x18\x01 \x01(\t\x12\x0f\n\x07\x63ontent\x18\x02 \x01(\x0c\"\x90\x01\n\x08MapFiles\x12\x0e\n\x06\x66ormat\x18\x01 \x01(\t\x12$\n\x05\x66iles\x18\x02 \x03(\x0b\x32\x15.swarmplan.v1.MapFile\x12\x1c\n\x14terrain_height_scale\x18\x03 \x01(\x01\x12\x1c\n\x0fterrain_ceiling\x18\x04 \x01(\x01H\x00\x88\x01\x01\x42\x12\n\x10_terrain_ceiling\"q\n\tMapSource\x12\'\n\x05\x66iles\x18\x01 \x01(\x0b\x32\x16.swarmplan.v1.MapFilesH\x00\x12\x31\n\nstructured\x18\x02 \x01(\x0b\x32\x1b.swarmplan.v1.StructuredMapH\x00\x42\x08\n\x06source\"\xad\x02\n\x07MapInfo\x12\n\n\x02id\x18\x01 \x01(\t\x12\x0c\n\x04name\x18\x02 \x01(\t\x12#\n\x04kind\x18\x03 \x01(\x0e\x32\x15.swarmplan.v1.MapKind\x12\r\n\x05width\x18\x04 \x01(\x05\x12\x0e\n\x06height\x18\x05 \x01(\x05\x12\x12\n\nresolution\x18\x06 \x01(\x01\x12 \n\x03min\x18\x07 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12 \n\x03max\x18\x08 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x16\n\x0eobstacle_count\x18\t \x01(\x03\x12.\n\ncreated_at\x18\n \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12\x14\n\x0c\x63ontent_hash\x18\x0b \x01(\t\x12\x0e\n\x06\x66ormat\x18\x0c \x01(\t\"I\n\x10UploadMapRequest\x12\x0c\n\x04name\x18\x01 \x01(\t\x12\'\n\x06source\x18\x02 \x01(\x0b\x32\x17.swarmplan.v1.MapSource\"H\n\x11UploadMapResponse\x12\"\n\x03map\x18\x01 \x01(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\x0f\n\x07\x63reated\x18\x02 \x01(\x08\"3\n\rGetMapRequest\x12\n\n\x02id\x18\x01 \x01(\t\x12\x16\n\x0einclude_source\x18\x02 \x01(\x08\"]\n\x0eGetMapResponse\x12\"\n\x03map\x18\x01 \x01(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\'\n\x06source\x18\x02 \x01(\x0b\x32\x17.swarmplan.v1.MapSource\"8\n\x0fListMapsRequest\x12\x11\n\tpage_size\x18\x01 \x01(\x05\x12\x12\n\npage_token\x18\x02 \x01(\t\"P\n\x10ListMapsResponse\x12#\n\x04maps\x18\x01 \x03(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\x17\n\x0fnext_page_token\x18\x02 \x01(\t\"\x1e\n\x10\x44\x65leteMapRequest\x12\n\n\x02id\x18\x01 \x01(\t\"\x13\n\x11\x44\x65leteMapResponse2\xb8\x02\n\nMapService\x12L\n\tUploadMap\x12\x1e.swarmplan.v1.UploadMapRequest\x1a\x1f.swarmplan.v1.UploadMapResponse\x12\x43\n\x06GetMap\x12\x1b.swarmplan.v1.GetMapRequest\x1a\x1c.swarmplan.v1.GetMapResponse\x12I\n\x08ListMaps\x12\x1d.swarmplan.v1.ListMapsRequest\x1a\x1e.swarmplan.v1.ListMapsResponse\x12L\n\tDeleteMap\x12\x1e.swarmplan.v1.DeleteMapRequest\x1a\x1f.swarmplan.v1.DeleteMapResponseB\x03\xf8\x01\x01\x62\x06proto3')
+DESCRIPTOR = _descriptor_pool.Default().AddSerializedFile(b'\n\x17swarmplan/v1/maps.proto\x12\x0cswarmplan.v1\x1a\x1fgoogle/protobuf/timestamp.proto\x1a\x19swarmplan/v1/common.proto\"z\n\x11OccupancyGridData\x12\r\n\x05width\x18\x01 \x01(\x05\x12\x0e\n\x06height\x18\x02 \x01(\x05\x12\r\n\x05\x63\x65lls\x18\x03 \x01(\x0c\x12\x12\n\nresolution\x18\x04 \x01(\x01\x12#\n\x06origin\x18\x05 \x01(\x0b\x32\x13.swarmplan.v1.Point\"=\n\x06\x43ircle\x12#\n\x06\x63\x65nter\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x0e\n\x06radius\x18\x02 \x01(\x01\"0\n\x07Polygon\x12%\n\x08vertices\x18\x01 \x03(\x0b\x32\x13.swarmplan.v1.Point\"\xa4\x01\n\x0eShapeWorldData\x12 \n\x03min\x18\x01 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12 \n\x03max\x18\x02 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12%\n\x07\x63ircles\x18\x03 \x03(\x0b\x32\x14.swarmplan.v1.Circle\x12\'\n\x08polygons\x18\x04 \x03(\x0b\x32\x15.swarmplan.v1.Polygon\"\x96\x01\n\x0bTerrainData\x12\r\n\x05width\x18\x01 \x01(\x05\x12\r\n\x05\x64\x65pth\x18\x02 \x01(\x05\x12\x0f\n\x07heights\x18\x03 \x03(\x01\x12\x11\n\tcell_size\x18\x04 \x01(\x01\x12#\n\x06origin\x18\x05 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x14\n\x07\x63\x65iling\x18\x06 \x01(\x01H\x00\x88\x01\x01\x42\n\n\x08_ceiling\"\xb5\x01\n\rStructuredMap\x12\x39\n\x0eoccupancy_grid\x18\x01 \x01(\x0b\x32\x1f.swarmplan.v1.OccupancyGridDataH\x00\x12\x33\n\x0bshape_world\x18\x02 \x01(\x0b\x32\x1c.swarmplan.v1.ShapeWorldDataH\x00\x12,\n\x07terrain\x18\x03 \x01(\x0b\x32\x19.swarmplan.v1.TerrainDataH\x00\x42\x06\n\x04kind\"(\n\x07MapFile\x12\x0c\n\x04name\x18\x01 \x01(\t\x12\x0f\n\x07\x63ontent\x18\x02 \x01(\x0c\"\x90\x01\n\x08MapFiles\x12\x0e\n\x06\x66ormat\x18\x01 \x01(\t\x12$\n\x05\x66iles\x18\x02 \x03(\x0b\x32\x15.swarmplan.v1.MapFile\x12\x1c\n\x14terrain_height_scale\x18\x03 \x01(\x01\x12\x1c\n\x0fterrain_ceiling\x18\x04 \x01(\x01H\x00\x88\x01\x01\x42\x12\n\x10_terrain_ceiling\"q\n\tMapSource\x12\'\n\x05\x66iles\x18\x01 \x01(\x0b\x32\x16.swarmplan.v1.MapFilesH\x00\x12\x31\n\nstructured\x18\x02 \x01(\x0b\x32\x1b.swarmplan.v1.StructuredMapH\x00\x42\x08\n\x06source\"\xbe\x02\n\x07MapInfo\x12\n\n\x02id\x18\x01 \x01(\t\x12\x0c\n\x04name\x18\x02 \x01(\t\x12#\n\x04kind\x18\x03 \x01(\x0e\x32\x15.swarmplan.v1.MapKind\x12\r\n\x05width\x18\x04 \x01(\x05\x12\x0e\n\x06height\x18\x05 \x01(\x05\x12\x12\n\nresolution\x18\x06 \x01(\x01\x12 \n\x03min\x18\x07 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12 \n\x03max\x18\x08 \x01(\x0b\x32\x13.swarmplan.v1.Point\x12\x16\n\x0eobstacle_count\x18\t \x01(\x03\x12.\n\ncreated_at\x18\n \x01(\x0b\x32\x1a.google.protobuf.Timestamp\x12\x14\n\x0c\x63ontent_hash\x18\x0b \x01(\t\x12\x0e\n\x06\x66ormat\x18\x0c \x01(\t\x12\x0f\n\x07version\x18\r \x01(\x03\"I\n\x10UploadMapRequest\x12\x0c\n\x04name\x18\x01 \x01(\t\x12\'\n\x06source\x18\x02 \x01(\x0b\x32\x17.swarmplan.v1.MapSource\"H\n\x11UploadMapResponse\x12\"\n\x03map\x18\x01 \x01(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\x0f\n\x07\x63reated\x18\x02 \x01(\x08\"R\n\rGetMapRequest\x12\n\n\x02id\x18\x01 \x01(\t\x12\x16\n\x0einclude_source\x18\x02 \x01(\x08\x12\x0c\n\x04name\x18\x03 \x01(\t\x12\x0f\n\x07version\x18\x04 \x01(\x03\"]\n\x0eGetMapResponse\x12\"\n\x03map\x18\x01 \x01(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\'\n\x06source\x18\x02 \x01(\x0b\x32\x17.swarmplan.v1.MapSource\"F\n\x0fListMapsRequest\x12\x11\n\tpage_size\x18\x01 \x01(\x05\x12\x12\n\npage_token\x18\x02 \x01(\t\x12\x0c\n\x04name\x18\x03 \x01(\t\"P\n\x10ListMapsResponse\x12#\n\x04maps\x18\x01 \x03(\x0b\x32\x15.swarmplan.v1.MapInfo\x12\x17\n\x0fnext_page_token\x18\x02 \x01(\t\"\x1e\n\x10\x44\x65leteMapRequest\x12\n\n\x02id\x18\x01 \x01(\t\"\x13\n\x11\x44\x65leteMapResponse2\xb8\x02\n\nMapService\x12L\n\tUploadMap\x12\x1e.swarmplan.v1.UploadMapRequest\x1a\x1f.swarmplan.v1.UploadMapResponse\x12\x43\n\x06GetMap\x12\x1b.swarmplan.v1.GetMapRequest\x1a\x1c.swarmplan.v1.GetMapResponse\x12I\n\x08ListMaps\x12\x1d.swarmplan.v1.ListMapsRequest\x1a\x1e.swarmplan.v1.ListMapsResponse\x12L\n\tDeleteMap\x12\x1e.swarmplan.v1.DeleteMapRequest\x1a\x1f.swarmplan.v1.DeleteMapResponseB\x03\xf8\x01\x01\x62\x06proto3')
 
 _builder.BuildMessageAndEnumDescriptors(DESCRIPTOR, globals())
 _builder.BuildTopDescriptorsAndMessages(DESCRIPTOR, 'swarmplan_client._proto.swarmplan.v1.maps_pb2', globals())
@@ -42,23 +42,23 @@ if _descriptor._USE_C_DESCRIPTORS == False:
   _MAPSOURCE._serialized_start=1031
   _MAPSOURCE._serialized_end=1144
   _MAPINFO._serialized_start=1147
-  _MAPINFO._serialized_end=1448
-  _UPLOADMAPREQUEST._serialized_start=1450
-  _UPLOADMAPREQUEST._serialized_end=1523
-  _UPLOADMAPRESPONSE._serialized_start=1525
-  _UPLOADMAPRESPONSE._serialized_end=1597
-  _GETMAPREQUEST._serialized_start=1599
-  _GETMAPREQUEST._serialized_end=1650
-  _GETMAPRESPONSE._serialized_start=1652
-  _GETMAPRESPONSE._serialized_end=1745
-  _LISTMAPSREQUEST._serialized_start=1747
-  _LISTMAPSREQUEST._serialized_end=1803
-  _LISTMAPSRESPONSE._serialized_start=1805
-  _LISTMAPSRESPONSE._serialized_end=1885
-  _DELETEMAPREQUEST._serialized_start=1887
-  _DELETEMAPREQUEST._serialized_end=1917
-  _DELETEMAPRESPONSE._serialized_start=1919
-  _DELETEMAPRESPONSE._serialized_end=1938
-  _MAPSERVICE._serialized_start=1941
-  _MAPSERVICE._serialized_end=2253
+  _MAPINFO._serialized_end=1465
+  _UPLOADMAPREQUEST._serialized_start=1467
+  _UPLOADMAPREQUEST._serialized_end=1540
+  _UPLOADMAPRESPONSE._serialized_start=1542
+  _UPLOADMAPRESPONSE._serialized_end=1614
+  _GETMAPREQUEST._serialized_start=1616
+  _GETMAPREQUEST._serialized_end=1698
+  _GETMAPRESPONSE._serialized_start=1700
+  _GETMAPRESPONSE._serialized_end=1793
+  _LISTMAPSREQUEST._serialized_start=1795
+  _LISTMAPSREQUEST._serialized_end=1865
+  _LISTMAPSRESPONSE._serialized_start=1867
+  _LISTMAPSRESPONSE._serialized_end=1947
+  _DELETEMAPREQUEST._serialized_start=1949
+  _DELETEMAPREQUEST._serialized_end=1979
+  _DELETEMAPRESPONSE._serialized_start=1981
+  _DELETEMAPRESPONSE._serialized_end=2000
+  _MAPSERVICE._serialized_start=2003
+  _MAPSERVICE._serialized_end=2315
 # @@protoc_insertion_point(module_scope)

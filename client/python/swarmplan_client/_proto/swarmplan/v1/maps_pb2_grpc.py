@@ -43,8 +43,11 @@ class MapServiceServicer(object):
         """Stores a map and returns its description. The server parses the map before it answers:
         when UploadMap returns OK, the map is stored durably and can be planned on.
 
-        Idempotent: uploading identical content (same content_hash) under the same name returns the
-        existing map (created = false) instead of a new one.
+        Versions: the first upload under a name is version 1. Different content under the same name
+        becomes the next version (one more than the highest the name ever had: numbers are not
+        reused after deletes). Idempotent: content identical (same content_hash) to the name's latest
+        version returns that version (created = false); content identical to an older version
+        becomes a new version, which is how a map is rolled back.
 
         Errors: INVALID_ARGUMENT (missing name, unknown format, malformed file: the message names
         the file, line or field), RESOURCE_EXHAUSTED (the map exceeds the server's cell or size
@@ -55,25 +58,27 @@ class MapServiceServicer(object):
         raise NotImplementedError('Method not implemented!')
 
     def GetMap(self, request, context):
-        """Returns a map's description, and on request the content it was uploaded with.
-        Errors: INVALID_ARGUMENT (empty id), NOT_FOUND.
+        """Returns a map version's description, and on request the content it was uploaded with. The
+        version is named by its id, or by the map's name and version number (the latest by default).
+        Errors: INVALID_ARGUMENT (neither or both of id and name, version < 0), NOT_FOUND.
         """
         context.set_code(grpc.StatusCode.UNIMPLEMENTED)
         context.set_details('Method not implemented!')
         raise NotImplementedError('Method not implemented!')
 
     def ListMaps(self, request, context):
-        """Lists maps, oldest first (by created_at, then id), a page at a time. A page continues after
-        the last map of the previous one, also when that map was deleted in between; maps uploaded
-        meanwhile appear on a later page (they are newer). Errors: INVALID_ARGUMENT (page_size,
-        page_token).
+        """Lists map versions, oldest first (by created_at, then id), a page at a time; with a name,
+        the versions of that map by version number. A page continues after the last map of the
+        previous one, also when that map was deleted in between; maps uploaded meanwhile appear on a
+        later page (they are newer). Errors: INVALID_ARGUMENT (page_size, page_token, name).
         """
         context.set_code(grpc.StatusCode.UNIMPLEMENTED)
         context.set_details('Method not implemented!')
         raise NotImplementedError('Method not implemented!')
 
     def DeleteMap(self, request, context):
-        """Deletes a map. A map that queued or running jobs refer to is not deleted: the call fails
+        """Deletes a map version (its other versions stay; the latest is then the highest remaining).
+        A map version that queued or running jobs refer to is not deleted: the call fails
         with FAILED_PRECONDITION naming those jobs (cancel them or wait until they finish, then
         delete again). This holds across restarts, so a job re-queued by a restart always finds its
         map. Finished jobs do not hold their map; they keep their results after it is deleted.
