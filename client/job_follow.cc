@@ -143,13 +143,16 @@ void PrintResultTable(const v1::PlanResult& result) {
 void PrintJob(const v1::Job& job) {
   const v1::PlanRequest& request = job.request();
   const bool with_z = request.start().z() != 0.0 || request.goal().z() != 0.0;
-  KeyValues rows = {{"job", job.id()},
-                    {"state", JobStateName(job.state())},
-                    {"algorithm", request.algorithm()},
-                    {"map", request.map_id()},
-                    {"start", FormatPoint(request.start(), with_z)},
-                    {"goal", FormatPoint(request.goal(), with_z)},
-                    {"seed", absl::StrCat(job.seed())}};
+  KeyValues rows = {
+      {"job", job.id()},
+      {"state", JobStateName(job.state())},
+      {"algorithm", request.algorithm()},
+      {"map", job.map_name().empty() ? request.map_id()
+                                     : absl::StrCat(request.map_id(), " (", job.map_name(), "@",
+                                                    job.map_version(), ")")},
+      {"start", FormatPoint(request.start(), with_z)},
+      {"goal", FormatPoint(request.goal(), with_z)},
+      {"seed", absl::StrCat(job.seed())}};
   if (!request.labels().empty()) rows.push_back({"labels", FormatLabels(request.labels())});
   if (job.state() == v1::JOB_STATE_QUEUED) {
     rows.push_back({"queue position", absl::StrCat(job.queue_position())});

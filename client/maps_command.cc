@@ -10,6 +10,7 @@
 #include "client/commands.h"
 #include "client/exit_codes.h"
 #include "client/map_files.h"
+#include "client/map_reference.h"
 #include "client/output.h"
 #include "core/map/io/map_io.h"
 #include "swarmplan/v1/maps.grpc.pb.h"
@@ -36,8 +37,12 @@ std::string MapSize(const v1::MapInfo& map) {
 
 KeyValues MapDetails(const v1::MapInfo& map) {
   KeyValues rows = {
-      {"id", map.id()},         {"name", map.name()},   {"kind", MapKindName(map.kind())},
-      {"format", map.format()}, {"size", MapSize(map)},
+      {"id", map.id()},
+      {"name", map.name()},
+      {"version", absl::StrCat(map.version())},
+      {"kind", MapKindName(map.kind())},
+      {"format", map.format()},
+      {"size", MapSize(map)},
   };
   if (map.resolution() > 0) rows.push_back({"resolution", FormatNumber(map.resolution())});
   const bool terrain = map.kind() == v1::MAP_KIND_TERRAIN;
@@ -72,18 +77,25 @@ int RunUpload(const GlobalOptions& global, const UploadOptions& options) {
     return kExitOk;
   }
   std::cout << (response.created() ? "uploaded map " : "map already stored: ")
-            << response.map().id() << "\n";
+            << response.map().id() << " (" << response.map().name() << "@"
+            << response.map().version() << ")\n";
   PrintKeyValues(std::cout, MapDetails(response.map()));
   return kExitOk;
 }
 
-int RunList(const GlobalOptions& global, int page_size) {
+struct ListOptions {
+  int page_size = 100;
+  std::string name;
+};
+
+int RunList(const GlobalOptions& global, const ListOptions& options) {
   absl::StatusOr<Connection> connection = Connection::Open(global);
   if (!connection.ok()) return ReportLocalError(global, connection.status());
   auto stub = v1::MapService::NewStub(connection->channel());
   v1::ListMapsResponse all;
   v1::ListMapsRequest request;
-  request.set_page_size(page_size);
+  request.set_page_size(options.page_size);
+  request.set_name(options.name);
   do {
     v1::ListMapsResponse page;
     grpc::Status status = stub->ListMaps(connection->UnaryContext().get(), request, &page);
@@ -96,13 +108,18 @@ int RunList(const GlobalOptions& global, int page_size) {
     return kExitOk;
   }
   if (all.maps().empty()) {
-    std::cout << "no maps stored; upload one with: swarmplan maps upload FILE\n";
+    if (!options.name.empty()) {
+      std::cout << "no map named '" << options.name << "'\n";
+    } else {
+      std::cout << "no maps stored; upload one with: swarmplan maps upload FILE\n";
+    }
     return kExitOk;
   }
-  Table table({"ID", "NAME", "KIND", "SIZE", "RESOLUTION", "OBSTACLES", "FORMAT", "CREATED"});
+  Table table(
+      {"ID", "NAME", "VERSION", "KIND", "SIZE", "RESOLUTION", "OBSTACLES", "FORMAT", "CREATED"});
   for (const v1::MapInfo& map : all.maps()) {
-    table.AddRow({map.id(), map.name(), MapKindName(map.kind()), MapSize(map),
-                  map.resolution() > 0 ? FormatNumber(map.resolution()) : "-",
+    table.AddRow({map.id(), map.name(), absl::StrCat(map.version()), MapKindName(map.kind()),
+                  MapSize(map), map.resolution() > 0 ? FormatNumber(map.resolution()) : "-",
                   absl::StrCat(map.obstacle_count()), map.format(),
                   FormatTimestamp(map.created_at())});
   }
@@ -110,12 +127,13 @@ int RunList(const GlobalOptions& global, int page_size) {
   return kExitOk;
 }
 
-int RunGet(const GlobalOptions& global, const std::string& id, const std::string& save_dir) {
+int RunGet(const GlobalOptions& global, const std::string& map, const std::string& save_dir) {
+  absl::StatusOr<v1::GetMapRequest> reference = ParseMapReference("map", map);
+  if (!reference.ok()) return ReportLocalError(global, reference.status());
   absl::StatusOr<Connection> connection = Connection::Open(global);
   if (!connection.ok()) return ReportLocalError(global, connection.status());
   auto stub = v1::MapService::NewStub(connection->channel());
-  v1::GetMapRequest request;
-  request.set_id(id);
+  v1::GetMapRequest request = *std::move(reference);
   request.set_include_source(!save_dir.empty());
   v1::GetMapResponse response;
   grpc::Status status = stub->GetMap(connection->UnaryContext().get(), request, &response);
@@ -136,9 +154,15 @@ int RunGet(const GlobalOptions& global, const std::string& id, const std::string
   return kExitOk;
 }
 
-int RunDelete(const GlobalOptions& global, const std::string& id) {
+int RunDelete(const GlobalOptions& global, const std::string& map) {
+  absl::StatusOr<v1::GetMapRequest> reference = ParseMapReference("map", map);
+  if (!reference.ok()) return ReportLocalError(global, reference.status());
   absl::StatusOr<Connection> connection = Connection::Open(global);
   if (!connection.ok()) return ReportLocalError(global, connection.status());
+  std::string id;
+  if (grpc::Status status = ResolveMapId(*connection, *reference, &id); !status.ok()) {
+    return ReportRpcError(global, "maps delete", status);
+  }
   auto stub = v1::MapService::NewStub(connection->channel());
   v1::DeleteMapRequest request;
   request.set_id(id);
@@ -177,21 +201,25 @@ void AddMapsCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
       ->each([upload](const std::string&) { upload->has_ceiling = true; });
   OnChosen(upload_command, action, [&global, upload] { return RunUpload(global, *upload); });
 
-  auto page_size = std::make_shared<int>(100);
-  CLI::App* list = maps->add_subcommand("list", "List stored maps, oldest first");
-  list->add_option("--page-size", *page_size, "Maps fetched per request")->capture_default_str();
-  OnChosen(list, action, [&global, page_size] { return RunList(global, *page_size); });
+  auto list_options = std::make_shared<ListOptions>();
+  CLI::App* list = maps->add_subcommand("list", "List stored map versions, oldest first");
+  list->add_option("--page-size", list_options->page_size, "Maps fetched per request")
+      ->capture_default_str();
+  list->add_option("--name", list_options->name, "Only the versions of the map with this name");
+  OnChosen(list, action, [&global, list_options] { return RunList(global, *list_options); });
 
-  auto get_id = std::make_shared<std::string>();
+  constexpr char kMapHelp[] = "Map id, or NAME@VERSION (VERSION a number or 'latest')";
+  auto get_map = std::make_shared<std::string>();
   auto save_dir = std::make_shared<std::string>();
-  CLI::App* get = maps->add_subcommand("get", "Show one map");
-  get->add_option("id", *get_id, "Map id")->required();
+  CLI::App* get = maps->add_subcommand("get", "Show one map version");
+  get->add_option("map", *get_map, kMapHelp)->required();
   get->add_option("--save", *save_dir, "Also download the map's files into this folder");
-  OnChosen(get, action, [&global, get_id, save_dir] { return RunGet(global, *get_id, *save_dir); });
+  OnChosen(get, action,
+           [&global, get_map, save_dir] { return RunGet(global, *get_map, *save_dir); });
 
   auto delete_id = std::make_shared<std::string>();
-  CLI::App* remove = maps->add_subcommand("delete", "Delete a map");
-  remove->add_option("id", *delete_id, "Map id")->required();
+  CLI::App* remove = maps->add_subcommand("delete", "Delete a map version");
+  remove->add_option("map", *delete_id, kMapHelp)->required();
   OnChosen(remove, action, [&global, delete_id] { return RunDelete(global, *delete_id); });
 }
 

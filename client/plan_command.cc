@@ -8,6 +8,7 @@
 #include "client/commands.h"
 #include "client/exit_codes.h"
 #include "client/job_follow.h"
+#include "client/map_reference.h"
 #include "client/output.h"
 #include "client/path_files.h"
 #include "swarmplan/v1/algorithms.grpc.pb.h"
@@ -17,7 +18,7 @@ namespace swarmplan::client {
 namespace {
 
 struct PlanOptions {
-  std::string map_id;
+  std::string map;  // an id or NAME@VERSION
   std::string start;
   std::string goal;
   std::string algorithm = "astar";
@@ -62,10 +63,10 @@ v1::Algorithm FetchSchema(const Connection& connection, const std::string& id) {
   return algorithm;
 }
 
-absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options,
+absl::StatusOr<v1::PlanRequest> BuildRequest(const PlanOptions& options, const std::string& map_id,
                                              const v1::Algorithm& schema) {
   v1::PlanRequest request;
-  request.set_map_id(options.map_id);
+  request.set_map_id(map_id);
   absl::StatusOr<v1::Point> start = ParsePoint("--start", options.start);
   if (!start.ok()) return start.status();
   absl::StatusOr<v1::Point> goal = ParsePoint("--goal", options.goal);
@@ -136,8 +137,14 @@ int Run(const GlobalOptions& global, PlanOptions options) {
   if (options.progress_interval.empty() && options.progress_every == 0) {
     options.progress_interval = global.json ? "1s" : "100ms";
   }
+  absl::StatusOr<v1::GetMapRequest> map = ParseMapReference("map", options.map);
+  if (!map.ok()) return ReportLocalError(global, map.status());
+  std::string map_id;
+  if (grpc::Status status = ResolveMapId(*connection, *map, &map_id); !status.ok()) {
+    return ReportRpcError(global, absl::StrCat("plan: map ", options.map), status);
+  }
   const v1::Algorithm schema = FetchSchema(*connection, options.algorithm);
-  absl::StatusOr<v1::PlanRequest> request = BuildRequest(options, schema);
+  absl::StatusOr<v1::PlanRequest> request = BuildRequest(options, map_id, schema);
   if (!request.ok()) return ReportLocalError(global, request.status());
 
   auto stub = v1::JobService::NewStub(connection->channel());
@@ -175,7 +182,11 @@ void AddPlanCommand(CLI::App& app, const GlobalOptions& global, Action* action) 
       "Coordinates: world units on every map kind (grid cell (x, y) covers [x, x+1) x\n"
       "[y, y+1) at resolution 1; on terrain x, y in the cell size's unit, the centre of\n"
       "cell (i, j) at origin + (i + 1/2, j + 1/2) * cellsize, and z a height).");
-  command->add_option("map", options->map_id, "Map id (see: swarmplan maps list)")->required();
+  command
+      ->add_option("map", options->map,
+                   "Map id, or NAME@VERSION (VERSION a number or 'latest'; see: swarmplan maps "
+                   "list)")
+      ->required();
   command->add_option("--start", options->start, "Start point x,y or x,y,z")->required();
   command->add_option("--goal", options->goal, "Goal point x,y or x,y,z")->required();
   command

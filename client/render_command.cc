@@ -11,6 +11,7 @@
 #include "client/commands.h"
 #include "client/exit_codes.h"
 #include "client/map_files.h"
+#include "client/map_reference.h"
 #include "client/map_render.h"
 #include "client/output.h"
 #include "client/path_files.h"
@@ -87,7 +88,16 @@ int Run(const GlobalOptions& global, const RenderCommandOptions& options) {
     connection = *std::move(opened);
     return kExitOk;
   };
-  std::string map_id = options.map_id;
+  std::string map_id;
+  if (!options.map_id.empty()) {
+    absl::StatusOr<v1::GetMapRequest> reference = ParseMapReference("--map", options.map_id);
+    if (!reference.ok()) return ReportLocalError(global, reference.status());
+    if (int code = connect(); code != kExitOk) return code;
+    grpc::Status status = ResolveMapId(*connection, *reference, &map_id);
+    if (!status.ok()) {
+      return ReportRpcError(global, absl::StrCat("render: map ", options.map_id), status);
+    }
+  }
   for (const std::string& id : options.jobs) {
     if (int code = connect(); code != kExitOk) return code;
     auto stub = v1::JobService::NewStub(connection->channel());
@@ -206,8 +216,8 @@ void AddRenderCommand(CLI::App& app, const GlobalOptions& global, Action* action
       "Draw a map with paths (from jobs or path files) and the convergence curves as SVG,\n"
       "and PNG when rsvg-convert, inkscape or ImageMagick is installed");
   command->add_option("--map", options->map_id,
-                      "Map id (default: the map of the first --job); its content comes from the "
-                      "server");
+                      "Map id or NAME@VERSION (default: the map of the first --job); its content "
+                      "comes from the server");
   command->add_option("--map-file", options->map_file, "Draw this local map file instead");
   command->add_option("--map-format", options->map_format, "Format of --map-file")
       ->check(CLI::IsMember(MapFormats()));

@@ -176,6 +176,36 @@ def main():
         cli.check(os.path.exists(os.path.join(work, "saved", "warehouse.ascii")),
                   "maps get --save downloads the uploaded file")
 
+        # Map versions: new content under a name is its next version; NAME@VERSION names one.
+        dock = os.path.join(work, "dock.ascii")
+        dock_ids = []
+        for art in ("....\n....\n", "....\n.#..\n"):
+            with open(dock, "w") as f:
+                f.write(art)
+            dock_ids.append(cli.json("maps", "upload", dock).get("map", {}).get("id", ""))
+        first = cli.json("maps", "get", "dock@1").get("map", {})
+        latest = cli.json("maps", "get", "dock@latest").get("map", {})
+        cli.check(first.get("id") == dock_ids[0] and int(first.get("version", 0)) == 1,
+                  "maps get dock@1 is the first upload")
+        cli.check(latest.get("id") == dock_ids[1] and int(latest.get("version", 0)) == 2,
+                  "maps get dock@latest is the second upload, version 2")
+        versions = [int(m.get("version", 0))
+                    for m in cli.json("maps", "list", "--name", "dock").get("maps", [])]
+        cli.check(versions == [1, 2], "maps list --name dock lists versions 1 and 2")
+        cli.check("VERSION" in cli.run("maps", "list").stdout, "maps list shows the version")
+        cli.run("maps", "get", "dock@first", expect=1)
+        cli.run("maps", "get", "dock@9", expect=3)
+        on_first = cli.json("plan", "dock@1", "--start", "0.5,0.5", "--goal", "3.5,1.5")
+        cli.check(on_first.get("request", {}).get("map_id") == dock_ids[0] and
+                  on_first.get("map_name") == "dock" and
+                  int(on_first.get("map_version", 0)) == 1,
+                  "plan dock@1 plans on the first version and the job records it")
+        cli.check("(dock@1)" in cli.run("jobs", "get", on_first.get("id", "")).stdout,
+                  "jobs get shows the map's name and version")
+        cli.run("maps", "delete", "dock@latest")
+        cli.check(cli.json("maps", "get", "dock@latest").get("map", {}).get("id") == dock_ids[0],
+                  "after deleting version 2, dock@latest is version 1")
+
         # Algorithms.
         table = cli.run("algorithms").stdout
         cli.check("astar" in table, "algorithms lists astar")

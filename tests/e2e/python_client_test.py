@@ -336,6 +336,18 @@ def inside(args):
         except TypeError:
             check(True, "plan with an unknown keyword: TypeError")
 
+        # A second upload of other content under the name "circles-1" is its version 2.
+        circles_v2 = client.upload_map(os.path.join(args.samples, "warehouse.ascii"),
+                                       name="circles-1")
+        check(circles_v2.created and circles_v2.version == 2 and circles.version == 1,
+              "upload_map of other content under the same name: version 2")
+        check(client.get_map(name="circles-1").id == circles_v2.id and
+              client.get_map(name="circles-1", version=1).id == circles.id,
+              "get_map by name: the latest, or the version asked for")
+        check([m.version for m in client.list_map_versions("circles-1")] == [1, 2],
+              "list_map_versions lists versions 1 and 2")
+        client.delete_map(circles_v2.id)
+
         client.delete_map(circles.id)
         expect_error("NOT_FOUND", circles.id, lambda: client.get_map(circles.id),
                      "get_map after delete_map")

@@ -88,6 +88,7 @@ class MapRecord:
     obstacle_count: int
     format: str
     content_hash: str
+    version: int = 0
     created: bool = False
 
     @classmethod
@@ -97,7 +98,7 @@ class MapRecord:
                    min=(info.min.x, info.min.y, info.min.z),
                    max=(info.max.x, info.max.y, info.max.z),
                    obstacle_count=info.obstacle_count, format=info.format,
-                   content_hash=info.content_hash, created=created)
+                   content_hash=info.content_hash, version=info.version, created=created)
 
 
 @dataclass(frozen=True)
@@ -270,9 +271,21 @@ class Client:
         response = self._call(self.maps.UploadMap, request)
         return MapRecord.from_proto(response.map, response.created)
 
-    def get_map(self, map_id: str) -> MapRecord:
-        return MapRecord.from_proto(
-            self._call(self.maps.GetMap, maps_pb2.GetMapRequest(id=map_id)).map)
+    def get_map(self, map_id: str = "", *, name: str = "", version: int = 0) -> MapRecord:
+        """A map version by its id, or by its name and version (0: the latest)."""
+        request = maps_pb2.GetMapRequest(id=map_id, name=name, version=version)
+        return MapRecord.from_proto(self._call(self.maps.GetMap, request).map)
+
+    def list_map_versions(self, name: str) -> list[MapRecord]:
+        """Every stored version of the map `name`, oldest first."""
+        versions: list[MapRecord] = []
+        request = maps_pb2.ListMapsRequest(name=name)
+        while True:
+            page = self._call(self.maps.ListMaps, request)
+            versions.extend(MapRecord.from_proto(m) for m in page.maps)
+            if not page.next_page_token:
+                return versions
+            request.page_token = page.next_page_token
 
     def delete_map(self, map_id: str) -> None:
         self._call(self.maps.DeleteMap, maps_pb2.DeleteMapRequest(id=map_id))
