@@ -364,6 +364,17 @@ TEST_F(RedisStoreServerTest, AcknowledgedMapsAndFinishedJobsSurviveAKill9OfRedis
       google::protobuf::util::MessageDifferencer::Equals(again.result(), finished.result()));
 }
 
+// One page of the versions of map `name`, through `server`'s ListMaps.
+v1::ListMapsResponse VersionsOf(TestServer& server, const std::string& name) {
+  v1::ListMapsRequest request;
+  request.set_name(name);
+  v1::ListMapsResponse versions;
+  grpc::ClientContext context;
+  const grpc::Status status = server.maps().ListMaps(&context, request, &versions);
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  return versions;
+}
+
 TEST_F(RedisStoreServerTest, ReplicasNumberTheVersionsOfANameTogether) {
   TempDir dir_b;
   TestServer a(dir_.path(), config_);
@@ -374,11 +385,7 @@ TEST_F(RedisStoreServerTest, ReplicasNumberTheVersionsOfANameTogether) {
   // Replica b sees a's newest version as the latest, and numbers the next one after it.
   EXPECT_EQ(b.UploadGrid("bay", 6, 4, /*wall_x=*/3), third);
   const std::string fourth = b.UploadGrid("bay", 6, 4);
-  v1::ListMapsRequest request;
-  request.set_name("bay");
-  v1::ListMapsResponse versions;
-  grpc::ClientContext context;
-  ASSERT_TRUE(a.maps().ListMaps(&context, request, &versions).ok());
+  const v1::ListMapsResponse versions = VersionsOf(a, "bay");
   ASSERT_EQ(versions.maps_size(), 4);
   const std::vector<std::string> ids = {first, second, third, fourth};
   for (int i = 0; i < 4; ++i) {
@@ -410,11 +417,7 @@ TEST_F(RedisStoreServerTest, MapsStoredWithoutAVersionAreNumberedInUploadOrderAt
     }
   }
   TestServer server(dir_.path(), config_);
-  v1::ListMapsRequest request;
-  request.set_name("legacy");
-  v1::ListMapsResponse versions;
-  grpc::ClientContext context;
-  ASSERT_TRUE(server.maps().ListMaps(&context, request, &versions).ok());
+  const v1::ListMapsResponse versions = VersionsOf(server, "legacy");
   ASSERT_EQ(versions.maps_size(), 2);
   EXPECT_EQ(versions.maps(0).id(), "map-early");
   EXPECT_EQ(versions.maps(0).version(), 1);
