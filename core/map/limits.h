@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace swarmplan {
@@ -12,5 +13,12 @@ struct MapLimits {
   int64_t max_obstacles = 100000;  // circles + polygons in a ShapeWorld
   int64_t max_vertices = 1000000;  // polygon vertices in a ShapeWorld, in all
 };
+
+// Every map's coordinates and extents, in world units, lie within +-kMaxWorldCoordinate:
+// distance fields keep distances as float and squared lengths must stay finite, so larger worlds
+// are refused (1e12 m is far beyond any site a fleet plans on).
+inline constexpr double kMaxWorldCoordinate = 1e12;
+// False for NaN and infinities too.
+inline bool InWorldRange(double v) { return std::abs(v) <= kMaxWorldCoordinate; }
 
 }  // namespace swarmplan

@@ -1,5 +1,6 @@
 #include "core/map/occupancy_grid.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "absl/status/status.h"
@@ -29,7 +30,15 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
     return absl::InvalidArgumentError(
         absl::StrCat("resolution must be a positive number, got ", resolution));
   }
-  if (!origin.allFinite()) return absl::InvalidArgumentError("origin must be finite");
+  if (!InWorldRange(origin.x()) || !InWorldRange(origin.y())) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("origin must be finite and within +-", kMaxWorldCoordinate));
+  }
+  if (!InWorldRange(std::max(std::abs(origin.x()), std::abs(origin.y())) +
+                    resolution * std::max(width, height))) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "resolution ", resolution, ": the grid would reach beyond +-", kMaxWorldCoordinate));
+  }
   OccupancyGrid grid;
   grid.width_ = width;
   grid.height_ = height;

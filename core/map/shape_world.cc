@@ -20,14 +20,17 @@ double SignedArea(const std::vector<Point2>& v) {
   return area / 2.0;
 }
 
+bool InRange(const Point2& p) { return InWorldRange(p.x()) && InWorldRange(p.y()); }
+
 }  // namespace
 
 absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle> circles,
                                               std::vector<Polygon> polygons,
                                               const MapLimits& limits) {
-  if (!bounds.min.allFinite() || !bounds.max.allFinite() || bounds.Width() <= 0 ||
-      bounds.Height() <= 0) {
-    return absl::InvalidArgumentError("bounds: must be finite with max > min in both x and y");
+  if (!InRange(bounds.min) || !InRange(bounds.max) || !(bounds.Width() > 0) ||
+      !(bounds.Height() > 0)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "bounds: must be finite, within +-", kMaxWorldCoordinate, ", with max > min in x and y"));
   }
   if (static_cast<int64_t>(circles.size() + polygons.size()) > limits.max_obstacles) {
     return absl::ResourceExhaustedError(absl::StrCat(
@@ -35,9 +38,10 @@ absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle
   }
   for (size_t i = 0; i < circles.size(); ++i) {
     const Circle& c = circles[i];
-    if (!c.center.allFinite() || !std::isfinite(c.radius) || c.radius <= 0) {
+    if (!InRange(c.center) || !InWorldRange(c.radius) || c.radius <= 0) {
       return absl::InvalidArgumentError(
-          absl::StrCat("circles[", i, "]: center must be finite and radius positive"));
+          absl::StrCat("circles[", i, "]: center must be finite and radius positive, within +-",
+                       kMaxWorldCoordinate));
     }
   }
   int64_t vertices = 0;
@@ -50,8 +54,9 @@ absl::StatusOr<ShapeWorld> ShapeWorld::Create(Bounds2 bounds, std::vector<Circle
           absl::StrCat("polygons hold more than the limit of ", limits.max_vertices, " vertices"));
     }
     for (const Point2& p : v) {
-      if (!p.allFinite()) {
-        return absl::InvalidArgumentError(absl::StrCat("polygons[", i, "]: vertex not finite"));
+      if (!InRange(p)) {
+        return absl::InvalidArgumentError(
+            absl::StrCat("polygons[", i, "]: vertex not finite or beyond +-", kMaxWorldCoordinate));
       }
     }
     if (v.size() < 3) {

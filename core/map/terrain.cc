@@ -1,6 +1,7 @@
 #include "core/map/terrain.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
@@ -28,22 +29,31 @@ absl::StatusOr<Terrain> Terrain::Create(int width, int depth, std::vector<double
     return absl::InvalidArgumentError(
         absl::StrCat("cell size must be a positive number, got ", cell_size));
   }
-  if (!origin.allFinite()) return absl::InvalidArgumentError("origin must be finite");
+  if (!InWorldRange(origin.x()) || !InWorldRange(origin.y())) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("origin must be finite and within +-", kMaxWorldCoordinate));
+  }
+  if (!InWorldRange(std::max(std::abs(origin.x()), std::abs(origin.y())) +
+                    cell_size * std::max(width, depth))) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "cell size ", cell_size, ": the terrain would reach beyond +-", kMaxWorldCoordinate));
+  }
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
   for (size_t i = 0; i < heights.size(); ++i) {
     const double h = heights[i];
     if (std::isnan(h)) continue;
-    if (!std::isfinite(h)) {
-      return absl::InvalidArgumentError(
-          absl::StrCat("height at ", i % width, ",", i / width, " is not finite"));
+    if (!InWorldRange(h)) {
+      return absl::InvalidArgumentError(absl::StrCat("height at ", i % width, ",", i / width,
+                                                     " is not finite or beyond +-",
+                                                     kMaxWorldCoordinate));
     }
     lo = std::min(lo, h);
     hi = std::max(hi, h);
   }
   if (lo > hi) return absl::InvalidArgumentError("terrain has no cell with data");
   if (std::isnan(ceiling)) ceiling = hi + std::max(1.0, hi - lo);
-  if (!std::isfinite(ceiling) || ceiling <= hi) {
+  if (!InWorldRange(ceiling) || ceiling <= hi) {
     return absl::InvalidArgumentError(
         absl::StrCat("ceiling ", ceiling, " must be above the highest ground ", hi));
   }
