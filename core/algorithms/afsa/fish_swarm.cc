@@ -71,7 +71,7 @@ class FishSwarmSearch {
       for (size_t i = 0; i < fish_.size(); ++i) {
         const double f = Swim(i, iteration);
         sum += f;
-        if (!p_.feasible_solutions && !best_cells_.empty()) done = true;
+        if (!p_.feasible_solutions && !seeds_ && !best_cells_.empty()) done = true;
       }
       log.Record(iteration, best_fitness_, sum / fish_.size(), evaluations_,
                  seeds_ || !best_cells_.empty());
@@ -189,24 +189,21 @@ class FishSwarmSearch {
     return length;
   }
 
-  // init=seeded: the trail is ranked by GridSeeds::Cost against the best arrival; a fish
-  // that records a solution restarts from a random place on a random seed.
+  // init=seeded: the trail is ranked by GridSeeds::Cost against the best arrival, and the fish
+  // restarts from a random place on a random seed, in every variant: a fish that starts on a
+  // seed first arrives along that seed's own tail, so stopping there would return the seed.
   double ArriveSeeded(Fish& fish, std::vector<Cell> cells, int iteration) {
     const double cost = seeds_->Cost(cells);
-    if (p_.feasible_solutions || best_cells_.empty()) {
-      if (best_cells_.empty() || cost < best_arrival_ - 1e-12) {
-        best_cells_ = std::move(cells);
-        best_arrival_ = cost;
-      }
-      Offer(cost, iteration);
+    if (best_cells_.empty() || cost < best_arrival_ - 1e-12) {
+      best_cells_ = std::move(cells);
+      best_arrival_ = cost;
     }
-    if (p_.feasible_solutions) {
-      const int64_t count = static_cast<int64_t>(seeds_->cell_paths().size());
-      const std::vector<Cell>& seed =
-          seeds_->ForMember(static_cast<size_t>(rng_.UniformInt(0, count - 1)));
-      PlaceOnSeed(fish, seed,
-                  static_cast<size_t>(rng_.UniformInt(0, static_cast<int64_t>(seed.size()) - 1)));
-    }
+    Offer(cost, iteration);
+    const int64_t count = static_cast<int64_t>(seeds_->cell_paths().size());
+    const std::vector<Cell>& seed =
+        seeds_->ForMember(static_cast<size_t>(rng_.UniformInt(0, count - 1)));
+    PlaceOnSeed(fish, seed,
+                static_cast<size_t>(rng_.UniformInt(0, static_cast<int64_t>(seed.size()) - 1)));
     return cost;
   }
 
@@ -289,7 +286,9 @@ PlannerInfo FishInfo(FishSwarmParams::Variant variant, std::string id, std::stri
       std::move(description) +
       " init=seeded (the default): fish start spread along the seed paths' cells, visual and "
       "steps scale with the grid (paper's values on a 20 x 20 grid), a fish swims straight to a "
-      "target in line of sight, trails are ranked by the request's objective (the length, or the "
+      "target in line of sight, every arrival is recorded and the fish restarts on a seed (no "
+      "variant stops at the first arrival), trails are ranked by the request's objective (the "
+      "length, or the "
       "fleet objective) of their any-angle paths, and the result is never worse than the best "
       "seed.";
   info.seed_paper = citations::kIdafsa;

@@ -26,7 +26,9 @@ namespace swarmplan {
 // else a random move; stepping toward a target picks a random valid move that gets closer to
 // it. Valid moves per cell are computed once and shared by all fish.
 // init=seeded: fish start spread along the seeds' cell paths, their trails the seed up to there
-// (a fish that records a solution restarts the same way); visual and steps are in cells of a
+// (every variant records each arrival and restarts the fish the same way, as idafsa's
+// feasible-solution set does: a fish that starts on a seed first arrives along the seed's own
+// tail, so the first arrival would be the seed); visual and steps are in cells of a
 // 20 x 20 grid (the paper's larger) and scale with the grid's longer side; a fish whose target
 // is in line of sight (clipped to its step) swims straight to it; trails are ranked by their
 // any-angle length, and the result is never longer than the best seed.
