@@ -10,12 +10,11 @@
 namespace swarmplan {
 namespace {
 
-// Cells along one axis: whole cells inside `extent`.
-int CellCount(double extent, double resolution) {
+// Cells along one axis: whole cells inside `extent`, as a double (it may exceed any int).
+double CellCount(double extent, double resolution) {
   const double cells = extent / resolution;
   const double rounded = std::round(cells);
-  return static_cast<int>(
-      std::abs(cells - rounded) <= 1e-9 * std::max(1.0, cells) ? rounded : std::floor(cells));
+  return std::abs(cells - rounded) <= 1e-9 * std::max(1.0, cells) ? rounded : std::floor(cells);
 }
 
 // True when the segment passes through the open box.

@@ -46,6 +46,14 @@ TEST(RasterizeTest, OriginAndPartialCells) {
   EXPECT_FALSE(RasterizeShapeWorld(world, -1.0).ok());
 }
 
+TEST(RasterizeTest, ResolutionFinerThanAnIntCountIsTooManyCells) {
+  // Found by fuzz_request: a world 3.8e17 cells wide at the requested resolution.
+  const ShapeWorld world = *ShapeWorld::Create({{0, 0}, {3.82e11, 10}}, {}, {});
+  absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, 1e-6);
+  ASSERT_FALSE(grid.ok());
+  EXPECT_EQ(grid.status().code(), absl::StatusCode::kResourceExhausted);
+}
+
 TEST(RasterizeTest, ConservativeOnRandomWorlds) {
   Rng rng(17);
   for (int trial = 0; trial < 5; ++trial) {
