@@ -14,17 +14,8 @@ int ClampToInt(double v, int lo, int hi) {
 
 // Clips the segment [a, b] to the box (Liang-Barsky); false when it misses the box.
 bool ClipToBox(const Point2& lo, const Point2& hi, Point2& a, Point2& b) {
-  if (!a.allFinite() || !b.allFinite()) return false;
-  const Point2 d = b - a;
-  if (!d.allFinite()) {
-    // The edge spans more than DBL_MAX: clip it at half scale, which is exact.
-    Point2 half_a = a * 0.5, half_b = b * 0.5;
-    if (!ClipToBox(lo * 0.5, hi * 0.5, half_a, half_b)) return false;
-    a = half_a * 2.0;
-    b = half_b * 2.0;
-    return true;
-  }
   double t0 = 0.0, t1 = 1.0;
+  const Point2 d = b - a;
   for (int axis = 0; axis < 2; ++axis) {
     if (d[axis] == 0.0) {
       if (a[axis] < lo[axis] || a[axis] > hi[axis]) return false;
@@ -90,9 +81,7 @@ DistanceField ShapeDistanceField(const Bounds2& bounds, const std::vector<Circle
       // The boundary: every cell the edge passes through, by boxes of pieces no longer than h.
       Point2 ca = a, cb = b;
       if (ClipToBox(origin, field_max, ca, cb)) {
-        // hypot: the squared length of a clipped edge overflows on worlds near DBL_MAX wide.
-        const double length = std::hypot(cb.x() - ca.x(), cb.y() - ca.y());
-        const int pieces = ClampToInt(std::ceil(length / h), 1, width + height + 1);
+        const int pieces = ClampToInt(std::ceil((cb - ca).norm() / h), 1, width + height + 1);
         for (int s = 0; s < pieces; ++s) {
           const Point2 p = ca + (cb - ca) * (static_cast<double>(s) / pieces);
           const Point2 q = ca + (cb - ca) * (static_cast<double>(s + 1) / pieces);

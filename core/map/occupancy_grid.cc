@@ -6,6 +6,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "core/geometry/distance_transform.h"
+#include "core/map/world_range.h"
 
 namespace swarmplan {
 
@@ -30,14 +31,10 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
     return absl::InvalidArgumentError(
         absl::StrCat("resolution must be a positive number, got ", resolution));
   }
-  if (!InWorldRange(origin.x()) || !InWorldRange(origin.y())) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("origin must be finite and within +-", kMaxWorldCoordinate));
-  }
-  if (!InWorldRange(std::max(std::abs(origin.x()), std::abs(origin.y())) +
-                    resolution * std::max(width, height))) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "resolution ", resolution, ": the grid would reach beyond +-", kMaxWorldCoordinate));
+  if (absl::Status s =
+          CheckRasterInWorldRange(origin, resolution, width, height, "resolution", "grid");
+      !s.ok()) {
+    return s;
   }
   OccupancyGrid grid;
   grid.width_ = width;

@@ -5,6 +5,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "core/map/world_range.h"
 
 namespace swarmplan {
 
@@ -29,14 +30,10 @@ absl::StatusOr<Terrain> Terrain::Create(int width, int depth, std::vector<double
     return absl::InvalidArgumentError(
         absl::StrCat("cell size must be a positive number, got ", cell_size));
   }
-  if (!InWorldRange(origin.x()) || !InWorldRange(origin.y())) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("origin must be finite and within +-", kMaxWorldCoordinate));
-  }
-  if (!InWorldRange(std::max(std::abs(origin.x()), std::abs(origin.y())) +
-                    cell_size * std::max(width, depth))) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "cell size ", cell_size, ": the terrain would reach beyond +-", kMaxWorldCoordinate));
+  if (absl::Status s =
+          CheckRasterInWorldRange(origin, cell_size, width, depth, "cell size", "terrain");
+      !s.ok()) {
+    return s;
   }
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
