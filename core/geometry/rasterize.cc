@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
+#include <vector>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
-#include "core/geometry/primitives.h"
+#include "core/geometry/box_overlap.h"
 
 namespace swarmplan {
 namespace {
@@ -17,41 +20,127 @@ double CellCount(double extent, double resolution) {
   return std::abs(cells - rounded) <= 1e-9 * std::max(1.0, cells) ? rounded : std::floor(cells);
 }
 
-// True when the segment passes through the open box.
-bool SegmentEntersOpenBox(const Point2& a, const Point2& b, const Bounds2& box) {
-  double t0 = 0.0, t1 = 1.0;
-  const Point2 d = b - a;
-  for (int axis = 0; axis < 2; ++axis) {
-    const double lo = box.min[axis], hi = box.max[axis];
-    if (d[axis] == 0.0) {
-      if (a[axis] <= lo || a[axis] >= hi) return false;
-      continue;
-    }
-    double ta = (lo - a[axis]) / d[axis];
-    double tb = (hi - a[axis]) / d[axis];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 >= t1) return false;
+// The raster being filled, with index arithmetic that stays in range for any coordinate.
+struct CellRaster {
+  Point2 origin;
+  double resolution;
+  int width;
+  int height;
+  std::vector<int8_t> cells;
+
+  Bounds2 Square(int x, int y) const {
+    const Point2 lo = origin + Point2(x, y) * resolution;
+    return Bounds2{lo, lo + Point2(resolution, resolution)};
   }
-  const Point2 mid = a + 0.5 * (t0 + t1) * d;
-  return mid.x() > box.min.x() && mid.x() < box.max.x() && mid.y() > box.min.y() &&
-         mid.y() < box.max.y();
+  double Center(int i, int axis) const { return origin[axis] + (i + 0.5) * resolution; }
+  int Size(int axis) const { return axis == 0 ? width : height; }
+  // The column (axis 0) or row (axis 1) holding coordinate v, clamped to [-1, size].
+  int IndexOf(double v, int axis) const {
+    const double i = std::floor((v - origin[axis]) / resolution);
+    return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(Size(axis))));
+  }
+  // Indices lo..hi (clamped to the raster) of the cells along `axis` that hold [a, b], and one
+  // more on each side for rounding.
+  std::pair<int, int> Span(double a, double b, int axis) const {
+    return {std::max(0, IndexOf(std::min(a, b), axis) - 1),
+            std::min(Size(axis) - 1, IndexOf(std::max(a, b), axis) + 1)};
+  }
+  int8_t& At(int x, int y) { return cells[static_cast<size_t>(y) * width + x]; }
+  void BlockRun(int x0, int x1, int y) {
+    if (x0 <= x1) std::fill(&At(x0, y), &At(x1, y) + 1, OccupancyGrid::kOccupied);
+  }
+};
+
+// The cells of one row that overlap a disc form a run around the column nearest its centre:
+// its ends come from the chord and are settled with the exact per-cell rule.
+void BlockCircle(const Circle& c, CellRaster& raster) {
+  const auto [y0, y1] = raster.Span(c.center.y() - c.radius, c.center.y() + c.radius, 1);
+  const int nearest = std::clamp(raster.IndexOf(c.center.x(), 0), 0, raster.width - 1);
+  for (int y = y0; y <= y1; ++y) {
+    auto hits = [&](int x) { return CircleOverlapsOpenBox(c, raster.Square(x, y)); };
+    int seed = -1;
+    for (int x : {nearest, nearest - 1, nearest + 1}) {
+      if (x >= 0 && x < raster.width && hits(x)) {
+        seed = x;
+        break;
+      }
+    }
+    if (seed < 0) continue;
+    const Bounds2 square = raster.Square(seed, y);
+    const double dy = std::max({0.0, square.min.y() - c.center.y(), c.center.y() - square.max.y()});
+    const double half_chord = std::sqrt(std::max(0.0, c.radius * c.radius - dy * dy));
+    int left = std::clamp(raster.IndexOf(c.center.x() - half_chord, 0), 0, seed);
+    while (left > 0 && hits(left - 1)) --left;
+    while (!hits(left)) ++left;
+    int right = std::clamp(raster.IndexOf(c.center.x() + half_chord, 0), seed, raster.width - 1);
+    while (right < raster.width - 1 && hits(right + 1)) ++right;
+    while (!hits(right)) --right;
+    raster.BlockRun(left, right, y);
+  }
 }
 
-bool PolygonOverlapsOpenBox(const std::vector<Point2>& polygon, const Bounds2& box) {
-  if (LocatePoint(0.5 * (box.min + box.max), polygon) == PointLocation::kInside) return true;
+// Blocks the cells whose open squares the segment enters, visiting only the cells along it.
+void BlockEdgeCells(const Point2& a, const Point2& b, CellRaster& raster) {
+  const auto [y0, y1] = raster.Span(a.y(), b.y(), 1);
+  for (int y = y0; y <= y1; ++y) {
+    // The part of a-b inside the row's band (a point near an end when it misses the band).
+    double t0 = 0.0, t1 = 1.0;
+    if (b.y() != a.y()) {
+      const double lo = raster.origin.y() + y * raster.resolution;
+      t0 = std::clamp((lo - a.y()) / (b.y() - a.y()), 0.0, 1.0);
+      t1 = std::clamp((lo + raster.resolution - a.y()) / (b.y() - a.y()), 0.0, 1.0);
+    }
+    const auto [x0, x1] =
+        raster.Span(a.x() + t0 * (b.x() - a.x()), a.x() + t1 * (b.x() - a.x()), 0);
+    for (int x = x0; x <= x1; ++x) {
+      int8_t& cell = raster.At(x, y);
+      if (cell == OccupancyGrid::kFree && SegmentEntersOpenBox(a, b, raster.Square(x, y))) {
+        cell = OccupancyGrid::kOccupied;
+      }
+    }
+  }
+}
+
+// Blocks the cells whose centres lie inside the polygon: per row, the centre line's crossings
+// with the edges (LocatePoint's half-open rule), filled pairwise. A centre on the boundary is
+// left to BlockEdgeCells, as every cell whose square an edge enters is.
+void BlockInterior(const std::vector<Point2>& polygon, CellRaster& raster,
+                   std::vector<std::pair<int, double>>& crossings) {
+  crossings.clear();
   const size_t n = polygon.size();
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    if (SegmentEntersOpenBox(polygon[j], polygon[i], box)) return true;
+    const Point2& a = polygon[j];
+    const Point2& b = polygon[i];
+    if (a.y() == b.y()) continue;
+    const auto [y0, y1] = raster.Span(a.y(), b.y(), 1);
+    for (int y = y0; y <= y1; ++y) {
+      const double yc = raster.Center(y, 1);
+      if ((a.y() > yc) != (b.y() > yc)) {
+        crossings.emplace_back(y, a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+      }
+    }
   }
-  return false;
-}
-
-double PointBoxDistance(const Point2& p, const Bounds2& box) {
-  const double dx = std::max({0.0, box.min.x() - p.x(), p.x() - box.max.x()});
-  const double dy = std::max({0.0, box.min.y() - p.y(), p.y() - box.max.y()});
-  return std::hypot(dx, dy);
+  std::sort(crossings.begin(), crossings.end());
+  for (size_t k = 0; k + 1 < crossings.size();) {
+    const auto [y, enter] = crossings[k];
+    const auto [next_y, leave] = crossings[k + 1];
+    if (next_y != y) {  // an odd count in a row: only by rounding at a vertex
+      ++k;
+      continue;
+    }
+    auto first_after = [&](double x) {
+      const double guess = std::floor((x - raster.origin.x()) / raster.resolution - 0.5) + 1;
+      int c = static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(raster.width)));
+      while (c > 0 && raster.Center(c - 1, 0) > x) --c;
+      while (c < raster.width && raster.Center(c, 0) <= x) ++c;
+      return c;
+    };
+    const int first = first_after(enter);
+    int last = first_after(leave) - 1;
+    if (last >= 0 && raster.Center(last, 0) >= leave) --last;
+    raster.BlockRun(first, last, y);
+    k += 2;
+  }
 }
 
 }  // namespace
@@ -77,39 +166,19 @@ absl::StatusOr<OccupancyGrid> RasterizeShapeWorld(const ShapeWorld& world, doubl
   }
   const int width = static_cast<int>(wide);
   const int height = static_cast<int>(high);
-  std::vector<int8_t> cells(static_cast<size_t>(width) * height, OccupancyGrid::kFree);
-  auto cell_box = [&](int x, int y) {
-    const Point2 lo = bounds.min + Point2(x, y) * resolution;
-    return Bounds2{lo, lo + Point2(resolution, resolution)};
-  };
-  // Visits the cells whose squares meet the box, calling mark(x, y, cell square).
-  auto for_cells_in = [&](const Bounds2& box, auto&& mark) {
-    const int x0 =
-        std::max(0, static_cast<int>(std::floor((box.min.x() - bounds.min.x()) / resolution)) - 1);
-    const int y0 =
-        std::max(0, static_cast<int>(std::floor((box.min.y() - bounds.min.y()) / resolution)) - 1);
-    const int x1 = std::min(
-        width - 1, static_cast<int>(std::floor((box.max.x() - bounds.min.x()) / resolution)) + 1);
-    const int y1 = std::min(
-        height - 1, static_cast<int>(std::floor((box.max.y() - bounds.min.y()) / resolution)) + 1);
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        int8_t& cell = cells[static_cast<size_t>(y) * width + x];
-        if (cell == OccupancyGrid::kFree && mark(cell_box(x, y))) cell = OccupancyGrid::kOccupied;
-      }
-    }
-  };
-  for (const Circle& c : world.circles()) {
-    const Point2 r(c.radius, c.radius);
-    for_cells_in(Bounds2{c.center - r, c.center + r}, [&](const Bounds2& square) {
-      return PointBoxDistance(c.center, square) < c.radius;
-    });
-  }
+  CellRaster raster{bounds.min, resolution, width, height,
+                    std::vector<int8_t>(static_cast<size_t>(width) * height, OccupancyGrid::kFree)};
+  for (const Circle& c : world.circles()) BlockCircle(c, raster);
+  std::vector<std::pair<int, double>> crossings;
   for (const Polygon& p : world.polygons()) {
-    for_cells_in(BoundingBox(p.vertices),
-                 [&](const Bounds2& square) { return PolygonOverlapsOpenBox(p.vertices, square); });
+    BlockInterior(p.vertices, raster, crossings);
+    const size_t n = p.vertices.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {
+      BlockEdgeCells(p.vertices[j], p.vertices[i], raster);
+    }
   }
-  return OccupancyGrid::Create(width, height, std::move(cells), resolution, bounds.min, limits);
+  return OccupancyGrid::Create(width, height, std::move(raster.cells), resolution, bounds.min,
+                               limits);
 }
 
 }  // namespace swarmplan

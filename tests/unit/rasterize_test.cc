@@ -1,8 +1,10 @@
 #include "core/geometry/rasterize.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
+#include "core/geometry/box_overlap.h"
 #include "core/geometry/shape_collision.h"
 #include "core/random.h"
 #include "gtest/gtest.h"
@@ -52,6 +54,60 @@ TEST(RasterizeTest, ResolutionFinerThanAnIntCountIsTooManyCells) {
   absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, 1e-6);
   ASSERT_FALSE(grid.ok());
   EXPECT_EQ(grid.status().code(), absl::StatusCode::kResourceExhausted);
+}
+
+// The rasteriser visits only the cells along edges and fills interiors by rows; the result must
+// be the per-cell rule applied to every cell and every obstacle.
+TEST(RasterizeTest, EveryCellFollowsThePerCellRule) {
+  Rng rng(29);
+  for (int trial = 0; trial < 12; ++trial) {
+    const double resolution = std::array{1.0, 0.5, 0.37, 0.25}[trial % 4];
+    std::vector<Circle> circles;
+    std::vector<Polygon> polygons;
+    for (int i = 0; i < 5; ++i) {
+      // Snapped to the cell corners half the time: centres and edges on cell boundaries.
+      auto coordinate = [&](double lo, double hi) {
+        const double v = rng.Uniform(lo, hi);
+        return rng.Uniform() < 0.5 ? std::round(v / resolution) * resolution : v;
+      };
+      circles.push_back(Circle{Point2(coordinate(-1, 21), coordinate(-1, 21)),
+                               i == 0 ? 1e-9 : coordinate(0.1, 3.0)});
+      const double x0 = coordinate(-2, 19), y0 = coordinate(-2, 19);
+      const double x1 = x0 + coordinate(0.3, 4), y1 = y0 + coordinate(0.3, 4);
+      polygons.push_back(Polygon{{Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)}});
+      // A star: vertices at increasing angles, random radii, so a simple non-convex polygon.
+      const Point2 c(rng.Uniform(0, 20), rng.Uniform(0, 20));
+      Polygon star;
+      const int n = 5 + static_cast<int>(rng.UniformInt(0, 20));
+      for (int k = 0; k < n; ++k) {
+        const double a = 2 * std::numbers::pi * (k + rng.Uniform(0, 0.5)) / n;
+        star.vertices.push_back(c + rng.Uniform(0.3, 6.0) * Point2(std::cos(a), std::sin(a)));
+      }
+      polygons.push_back(star);
+    }
+    absl::StatusOr<ShapeWorld> world =
+        ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(20, 20)}, circles, polygons);
+    ASSERT_TRUE(world.ok()) << world.status();
+    absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(*world, resolution);
+    ASSERT_TRUE(grid.ok()) << grid.status();
+    int blocked = 0;
+    for (int y = 0; y < grid->height(); ++y) {
+      for (int x = 0; x < grid->width(); ++x) {
+        const Point2 lo = Point2(x, y) * resolution;
+        const Bounds2 square{lo, lo + Point2(resolution, resolution)};
+        bool expected = false;
+        for (const Circle& c : world->circles()) expected |= CircleOverlapsOpenBox(c, square);
+        for (const Polygon& p : world->polygons()) {
+          expected |= PolygonOverlapsOpenBox(p.vertices, square);
+        }
+        ASSERT_EQ(grid->IsBlocked(x, y), expected)
+            << "trial " << trial << " cell " << x << "," << y << " resolution " << resolution;
+        blocked += expected;
+      }
+    }
+    EXPECT_GT(blocked, 0);
+    EXPECT_LT(blocked, grid->width() * grid->height());
+  }
 }
 
 TEST(RasterizeTest, ConservativeOnRandomWorlds) {
