@@ -32,19 +32,6 @@ std::optional<Path> PullString(const GridSpace& space, const Path& path) {
   return PullString(space, path, [](size_t, size_t) { return true; });
 }
 
-// Whether the field's bilinear distance stays at least `floor` at points at most half a field
-// cell apart on the segment a-b, both ends included.
-bool SegmentKeeps(const DistanceField& field, const Point3& a, const Point3& b, double floor) {
-  const Point3 step = b - a;
-  const int pieces =
-      std::max(1, static_cast<int>(std::ceil(2.0 * step.head<2>().norm() / field.cell_size())));
-  for (int k = 0; k <= pieces; ++k) {
-    const Point3 p = a + step * (static_cast<double>(k) / pieces);
-    if (field.Bilinear(p.x(), p.y()) < floor) return false;
-  }
-  return true;
-}
-
 // Moves each interior point to the corner of its cell that shortens the path most while both
 // its segments stay free. On a grid the shortest path bends at obstacle corners, which are cell
 // corners; the centres a cell path runs through lie half a cell off them.
@@ -98,7 +85,7 @@ std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path&
     }
     while (stretch_end < j)
       stretch_floor = std::min(stretch_floor, vertex_clearance[++stretch_end]);
-    return SegmentKeeps(field, path[anchor], path[j], stretch_floor);
+    return field.SegmentKeeps(path[anchor].head<2>(), path[j].head<2>(), stretch_floor);
   });
   if (!pulled) return std::nullopt;
   return PruneCollinear(*pulled);

@@ -1,6 +1,7 @@
 #include "core/map/distance_field.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -40,7 +41,54 @@ DistanceField DistanceField::FromBlockedCells(int width, int height,
       field.values_[i] = static_cast<float>(value);
     }
   }
+  double step_x = 0.0, step_y = 0.0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double v = field.CellValue(x, y);
+      if (x + 1 < width) step_x = std::max(step_x, std::abs(field.CellValue(x + 1, y) - v));
+      if (y + 1 < height) step_y = std::max(step_y, std::abs(field.CellValue(x, y + 1) - v));
+    }
+  }
+  field.slope_bound_ = std::hypot(step_x, step_y) / cell;
   return field;
+}
+
+bool DistanceField::SegmentKeeps(const Point2& a, const Point2& b, double floor) const {
+  const Point2 step = b - a;
+  const double length = step.norm();
+  const int pieces =
+      static_cast<int>(std::clamp(std::ceil(2.0 * length / cell_), 1.0, double{1 << 30}));
+  auto sample = [&](int k) {
+    const Point2 p = a + step * (static_cast<double>(k) / pieces);
+    return Bilinear(p.x(), p.y());
+  };
+  const double first = sample(0), last = sample(pieces);
+  if (first < floor || last < floor) return false;
+  // Covers the rounding of the sample points and of the interpolation.
+  const double slack =
+      1e-9 * (1.0 + std::abs(floor) + slope_bound_ * (a.cwiseAbs().sum() + b.cwiseAbs().sum()));
+  const double piece = length / pieces;
+  // Stretches of samples [lo, hi] whose end values are known to be at least the floor, searched
+  // depth first: at most two per level of halving are pending.
+  struct Stretch {
+    int lo, hi;
+    double lo_value, hi_value;
+  };
+  std::array<Stretch, 72> pending;
+  size_t count = 0;
+  pending[count++] = Stretch{0, pieces, first, last};
+  while (count > 0) {
+    const Stretch s = pending[--count];
+    if (s.hi - s.lo < 2) continue;
+    const double fall = slope_bound_ * 0.5 * (s.hi - s.lo) * piece;
+    if (std::min(s.lo_value, s.hi_value) - fall - slack >= floor) continue;
+    const int mid = s.lo + (s.hi - s.lo) / 2;
+    const double value = sample(mid);
+    if (value < floor) return false;
+    pending[count++] = Stretch{mid, s.hi, value, s.hi_value};
+    pending[count++] = Stretch{s.lo, mid, s.lo_value, value};
+  }
+  return true;
 }
 
 }  // namespace swarmplan

@@ -36,6 +36,9 @@ class DistanceField {
   double inverse_cell_size() const { return inv_cell_; }
   const Point2& origin() const { return origin_; }
   size_t MemoryBytes() const { return values_.size() * sizeof(float); }
+  // The most Bilinear changes per world unit moved (its Lipschitz constant): the largest
+  // differences between neighbouring centres along x and along y over the cell size, combined.
+  double slope_bound() const { return slope_bound_; }
 
   // The value at the centre of cell (x, y), which must be inside the field.
   float CellValue(int x, int y) const { return values_[static_cast<size_t>(y) * width_ + x]; }
@@ -56,6 +59,11 @@ class DistanceField {
     const double top = p[step_y_] + tx * (p[step_y_ + step_x_] - p[step_y_]);
     return bottom + ty * (top - bottom);
   }
+  // Whether Bilinear is at least `floor` at every point a + (b - a) k / n, k = 0..n, with n the
+  // fewest pieces no longer than half a cell. Stretches whose end samples clear the floor by
+  // more than slope_bound() lets the value fall between them are accepted unread, so open
+  // space costs a few reads per segment; the verdict is the dense check's.
+  bool SegmentKeeps(const Point2& a, const Point2& b, double floor) const;
 
  private:
   int width_ = 0, height_ = 0;
@@ -63,6 +71,7 @@ class DistanceField {
   // a field one cell wide or high).
   int last_x_ = 0, last_y_ = 0, step_x_ = 0, step_y_ = 0;
   double cell_ = 1.0, inv_cell_ = 1.0;
+  double slope_bound_ = 0.0;
   Point2 origin_ = Point2::Zero();
   std::vector<float> values_;
 };
