@@ -124,7 +124,9 @@ void BlockInterior(const std::vector<Point2>& polygon, CellRaster& raster,
   for (size_t k = 0; k + 1 < crossings.size();) {
     const auto [y, enter] = crossings[k];
     const auto [next_y, leave] = crossings[k + 1];
-    if (next_y != y) {  // an odd count in a row: only by rounding at a vertex
+    // A closed ring crosses each line an even number of times; a lone crossing is skipped
+    // rather than paired with the next row's.
+    if (next_y != y) {
       ++k;
       continue;
     }
