@@ -1,7 +1,6 @@
 #include "core/geometry/box_overlap.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/geometry/primitives.h"
 
@@ -38,10 +37,7 @@ bool PolygonOverlapsOpenBox(const std::vector<Point2>& polygon, const Bounds2& b
 }
 
 bool CircleOverlapsOpenBox(const Circle& circle, const Bounds2& box) {
-  const Point2& p = circle.center;
-  const double dx = std::max({0.0, box.min.x() - p.x(), p.x() - box.max.x()});
-  const double dy = std::max({0.0, box.min.y() - p.y(), p.y() - box.max.y()});
-  return std::hypot(dx, dy) < circle.radius;
+  return BoxDistance(Bounds2{circle.center, circle.center}, box) < circle.radius;
 }
 
 }  // namespace swarmplan
