@@ -101,12 +101,16 @@ void BlockEdgeCells(const Point2& a, const Point2& b, CellRaster& raster) {
   }
 }
 
-// Blocks the cells whose centres lie inside the polygon: per row, the centre line's crossings
-// with the edges (LocatePoint's half-open rule), filled pairwise. A centre on the boundary is
-// left to BlockEdgeCells, as every cell whose square an edge enters is.
-void BlockInterior(const std::vector<Point2>& polygon, CellRaster& raster,
-                   std::vector<std::pair<int, double>>& crossings) {
-  crossings.clear();
+// Reusable buffers of BlockInterior: the crossings of each row's centre line, grouped by row.
+struct RowCrossings {
+  std::vector<int> row_start;  // crossings of row y0 + i are xs[row_start[i]..row_start[i + 1])
+  std::vector<double> xs;
+};
+
+// Calls visit(y, x) for each crossing of an edge with the centre line of a row in [y0, y1], by
+// LocatePoint's half-open rule.
+template <typename Visit>
+void ForEachCrossing(const std::vector<Point2>& polygon, const CellRaster& raster, Visit visit) {
   const size_t n = polygon.size();
   for (size_t i = 0, j = n - 1; i < n; j = i++) {
     const Point2& a = polygon[j];
@@ -116,32 +120,52 @@ void BlockInterior(const std::vector<Point2>& polygon, CellRaster& raster,
     for (int y = y0; y <= y1; ++y) {
       const double yc = raster.Center(y, 1);
       if ((a.y() > yc) != (b.y() > yc)) {
-        crossings.emplace_back(y, a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+        visit(y, a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
       }
     }
   }
-  std::sort(crossings.begin(), crossings.end());
-  for (size_t k = 0; k + 1 < crossings.size();) {
-    const auto [y, enter] = crossings[k];
-    const auto [next_y, leave] = crossings[k + 1];
-    // A closed ring crosses each line an even number of times; a lone crossing is skipped
-    // rather than paired with the next row's.
-    if (next_y != y) {
-      ++k;
-      continue;
+}
+
+// The first column whose centre lies right of x.
+int FirstColumnAfter(double x, const CellRaster& raster) {
+  const double guess = std::floor((x - raster.origin.x()) / raster.resolution - 0.5) + 1;
+  int c = static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(raster.width)));
+  while (c > 0 && raster.Center(c - 1, 0) > x) --c;
+  while (c < raster.width && raster.Center(c, 0) <= x) ++c;
+  return c;
+}
+
+// Blocks the cells whose centres lie inside the polygon: per row, the centre line's crossings
+// with the edges, filled pairwise. A centre on the boundary is left to BlockEdgeCells, as every
+// cell whose square an edge enters is. Crossings are bucketed by row (a counting pass, then a
+// filling pass), so the work is linear in the polygon's rows and crossings.
+void BlockInterior(const std::vector<Point2>& polygon, CellRaster& raster, RowCrossings& rows) {
+  double lo = polygon[0].y(), hi = polygon[0].y();
+  for (const Point2& v : polygon) {
+    lo = std::min(lo, v.y());
+    hi = std::max(hi, v.y());
+  }
+  const auto [first_row, last_row] = raster.Span(lo, hi, 1);
+  const int y0 = first_row, y1 = last_row;  // lambdas cannot capture structured bindings
+  if (y0 > y1) return;
+  rows.row_start.assign(static_cast<size_t>(y1 - y0) + 2, 0);
+  ForEachCrossing(polygon, raster, [&](int y, double) { ++rows.row_start[y - y0 + 1]; });
+  for (size_t i = 1; i < rows.row_start.size(); ++i) rows.row_start[i] += rows.row_start[i - 1];
+  rows.xs.resize(static_cast<size_t>(rows.row_start.back()));
+  std::vector<int>& next = rows.row_start;  // shifted down by one row while filling
+  ForEachCrossing(polygon, raster, [&](int y, double x) { rows.xs[next[y - y0]++] = x; });
+  for (int y = y1; y >= y0; --y) {
+    const size_t end = static_cast<size_t>(next[y - y0]);
+    const size_t begin = y > y0 ? static_cast<size_t>(next[y - y0 - 1]) : 0;
+    std::sort(rows.xs.begin() + begin, rows.xs.begin() + end);
+    // A closed ring crosses each line an even number of times; an odd last crossing (rounding)
+    // is left out.
+    for (size_t k = begin; k + 1 < end; k += 2) {
+      const int first = FirstColumnAfter(rows.xs[k], raster);
+      int last = FirstColumnAfter(rows.xs[k + 1], raster) - 1;
+      if (last >= 0 && raster.Center(last, 0) >= rows.xs[k + 1]) --last;
+      raster.BlockRun(first, last, y);
     }
-    auto first_after = [&](double x) {
-      const double guess = std::floor((x - raster.origin.x()) / raster.resolution - 0.5) + 1;
-      int c = static_cast<int>(std::clamp(guess, 0.0, static_cast<double>(raster.width)));
-      while (c > 0 && raster.Center(c - 1, 0) > x) --c;
-      while (c < raster.width && raster.Center(c, 0) <= x) ++c;
-      return c;
-    };
-    const int first = first_after(enter);
-    int last = first_after(leave) - 1;
-    if (last >= 0 && raster.Center(last, 0) >= leave) --last;
-    raster.BlockRun(first, last, y);
-    k += 2;
   }
 }
 
@@ -171,9 +195,9 @@ absl::StatusOr<OccupancyGrid> RasterizeShapeWorld(const ShapeWorld& world, doubl
   CellRaster raster{bounds.min, resolution, width, height,
                     std::vector<int8_t>(static_cast<size_t>(width) * height, OccupancyGrid::kFree)};
   for (const Circle& c : world.circles()) BlockCircle(c, raster);
-  std::vector<std::pair<int, double>> crossings;
+  RowCrossings rows;
   for (const Polygon& p : world.polygons()) {
-    BlockInterior(p.vertices, raster, crossings);
+    BlockInterior(p.vertices, raster, rows);
     const size_t n = p.vertices.size();
     for (size_t i = 0, j = n - 1; i < n; j = i++) {
       BlockEdgeCells(p.vertices[j], p.vertices[i], raster);

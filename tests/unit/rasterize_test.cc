@@ -14,6 +14,28 @@ namespace {
 
 int BlockedCells(const OccupancyGrid& grid) { return static_cast<int>(grid.BlockedCount()); }
 
+// Rasterises `world` (origin at 0, 0) and checks each cell against the per-cell rule of
+// box_overlap.h; returns the number of blocked cells.
+int CheckEveryCell(const ShapeWorld& world, double resolution) {
+  absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(world, resolution);
+  EXPECT_TRUE(grid.ok()) << grid.status();
+  if (!grid.ok()) return 0;
+  for (int y = 0; y < grid->height(); ++y) {
+    for (int x = 0; x < grid->width(); ++x) {
+      const Point2 lo = Point2(x, y) * resolution;
+      const Bounds2 square{lo, lo + Point2(resolution, resolution)};
+      bool expected = false;
+      for (const Circle& c : world.circles()) expected |= CircleOverlapsOpenBox(c, square);
+      for (const Polygon& p : world.polygons()) {
+        expected |= PolygonOverlapsOpenBox(p.vertices, square);
+      }
+      EXPECT_EQ(grid->IsBlocked(x, y), expected) << "cell " << x << "," << y;
+      if (grid->IsBlocked(x, y) != expected) return -1;
+    }
+  }
+  return BlockedCells(*grid);
+}
+
 TEST(RasterizeTest, AlignedSquareAndCircleBlockExactlyTheirCells) {
   const ShapeWorld world =
       *ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(10, 8)}, {Circle{Point2(6.5, 6.5), 0.5}},
@@ -88,26 +110,25 @@ TEST(RasterizeTest, EveryCellFollowsThePerCellRule) {
     absl::StatusOr<ShapeWorld> world =
         ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(20, 20)}, circles, polygons);
     ASSERT_TRUE(world.ok()) << world.status();
-    absl::StatusOr<OccupancyGrid> grid = RasterizeShapeWorld(*world, resolution);
-    ASSERT_TRUE(grid.ok()) << grid.status();
-    int blocked = 0;
-    for (int y = 0; y < grid->height(); ++y) {
-      for (int x = 0; x < grid->width(); ++x) {
-        const Point2 lo = Point2(x, y) * resolution;
-        const Bounds2 square{lo, lo + Point2(resolution, resolution)};
-        bool expected = false;
-        for (const Circle& c : world->circles()) expected |= CircleOverlapsOpenBox(c, square);
-        for (const Polygon& p : world->polygons()) {
-          expected |= PolygonOverlapsOpenBox(p.vertices, square);
-        }
-        ASSERT_EQ(grid->IsBlocked(x, y), expected)
-            << "trial " << trial << " cell " << x << "," << y << " resolution " << resolution;
-        blocked += expected;
-      }
-    }
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << " resolution " << resolution);
+    const int blocked = CheckEveryCell(*world, resolution);
     EXPECT_GT(blocked, 0);
-    EXPECT_LT(blocked, grid->width() * grid->height());
+    EXPECT_LT(blocked, 20 * 20 / (resolution * resolution));
   }
+}
+
+// Polygons that reach far outside the bounds cross every row of a tall raster, overlapping each
+// other: the rows' crossings come from several edges and several polygons.
+TEST(RasterizeTest, PolygonsReachingFarOutsideFollowThePerCellRule) {
+  const std::vector<Polygon> polygons = {
+      Polygon{{Point2(0.004, 4294967296.0), Point2(32, 1.25), Point2(2.03, 2.0)}},
+      Polygon{{Point2(7.3, 950), Point2(-5, 1e9), Point2(-5, -1e9)}},
+      Polygon{{Point2(4.1, 20), Point2(12, -3e6), Point2(6.6, 1999.7), Point2(5.2, 3e7)}}};
+  const ShapeWorld world =
+      *ShapeWorld::Create(Bounds2{Point2(0, 0), Point2(10, 2000)}, {}, polygons);
+  const int blocked = CheckEveryCell(world, 0.5);
+  EXPECT_GT(blocked, 0);
+  EXPECT_LT(blocked, 20 * 4000);
 }
 
 TEST(RasterizeTest, ConservativeOnRandomWorlds) {
