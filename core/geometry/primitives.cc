@@ -302,6 +302,13 @@ double BoxDistance(const Bounds2& a, const Bounds2& b) {
   return std::hypot(dx, dy);
 }
 
+bool BoxesFartherThan(const Bounds2& a, const Bounds2& b, double d) {
+  if (d < 0) return true;
+  const double dx = std::max({0.0, a.min.x() - b.max.x(), b.min.x() - a.max.x()});
+  const double dy = std::max({0.0, a.min.y() - b.max.y(), b.min.y() - a.max.y()});
+  return dx * dx + dy * dy > d * d * (1.0 + 1e-12);
+}
+
 bool IsConvex(const std::vector<Point2>& polygon) {
   const std::vector<Point2> v = WithoutDuplicates(polygon);
   const size_t n = v.size();

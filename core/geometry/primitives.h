@@ -72,6 +72,10 @@ Polygon CircleToPolygon(const Circle& circle, double tolerance);
 Bounds2 BoundingBox(const std::vector<Point2>& points);
 // Smallest distance between two boxes (0 when they overlap).
 double BoxDistance(const Bounds2& a, const Bounds2& b);
+// Whether BoxDistance(a, b) exceeds d, without a square root: the pre-filter of exact distance
+// and collision queries. Within rounding of d it answers false, so a caller that skips on true
+// never skips a box that could matter.
+bool BoxesFartherThan(const Bounds2& a, const Bounds2& b, double d);
 
 bool IsConvex(const std::vector<Point2>& polygon);
 

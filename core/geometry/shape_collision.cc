@@ -37,7 +37,7 @@ double ShapeCollisionChecker::Clearance(const Point3& p3) const {
     best = std::min(best, (p - c.center).norm() - c.radius);
   }
   for (size_t i = 0; i < world_.polygons().size(); ++i) {
-    if (BoxDistance(box, polygon_boxes_[i]) >= best) continue;
+    if (BoxesFartherThan(box, polygon_boxes_[i], best)) continue;
     best = std::min(best, SignedDistanceToPolygon(p, world_.polygons()[i].vertices));
   }
   return best;
@@ -50,11 +50,11 @@ double ShapeCollisionChecker::SegmentClearance(const Point3& a3, const Point3& b
   const Bounds2 box = SegmentBox(a, b);
   double best = kInf;
   for (size_t i = 0; i < world_.circles().size(); ++i) {
-    if (BoxDistance(box, circle_boxes_[i]) >= best) continue;
+    if (BoxesFartherThan(box, circle_boxes_[i], best)) continue;
     best = std::min(best, SegmentCircleDistance(a, b, world_.circles()[i]));
   }
   for (size_t i = 0; i < world_.polygons().size(); ++i) {
-    if (BoxDistance(box, polygon_boxes_[i]) >= best) continue;
+    if (BoxesFartherThan(box, polygon_boxes_[i], best)) continue;
     best = std::min(best, SegmentPolygonDistance(a, b, world_.polygons()[i].vertices));
   }
   return best;
@@ -67,11 +67,11 @@ bool ShapeCollisionChecker::SegmentFree(const Point3& a3, const Point3& b3,
   if (!world_.bounds().Contains(a) || !world_.bounds().Contains(b)) return false;
   const Bounds2 box = SegmentBox(a, b);
   for (size_t i = 0; i < world_.circles().size(); ++i) {
-    if (BoxDistance(box, circle_boxes_[i]) > clearance) continue;
+    if (BoxesFartherThan(box, circle_boxes_[i], clearance)) continue;
     if (SegmentCircleDistance(a, b, world_.circles()[i]) < clearance) return false;
   }
   for (size_t i = 0; i < world_.polygons().size(); ++i) {
-    if (BoxDistance(box, polygon_boxes_[i]) > clearance) continue;
+    if (BoxesFartherThan(box, polygon_boxes_[i], clearance)) continue;
     if (SegmentPolygonDistance(a, b, world_.polygons()[i].vertices) < clearance) return false;
   }
   return true;

@@ -1,6 +1,7 @@
 #include "core/geometry/primitives.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/random.h"
@@ -18,6 +19,35 @@ TEST(PrimitivesTest, PointSegmentDistance) {
   EXPECT_DOUBLE_EQ(PointSegmentDistance(Point2(1, 1), Point2(0, 0), Point2(2, 0)), 1.0);
   EXPECT_DOUBLE_EQ(PointSegmentDistance(Point2(3, 4), Point2(0, 0), Point2(0, 0)), 5.0);
   EXPECT_DOUBLE_EQ(PointSegmentDistance(Point2(-3, 4), Point2(0, 0), Point2(2, 0)), 5.0);
+}
+
+// The square-root-free pre-filter agrees with BoxDistance away from ties and never claims
+// "farther" at one; negative distances are always exceeded.
+TEST(PrimitivesTest, BoxesFartherThanAgreesWithBoxDistance) {
+  Rng rng(17);
+  auto random_box = [&] {
+    const Point2 lo(rng.Uniform(-50, 50), rng.Uniform(-50, 50));
+    return Bounds2{lo, lo + Point2(rng.Uniform(0, 10), rng.Uniform(0, 10))};
+  };
+  int farther = 0, nearer = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Bounds2 a = random_box(), b = random_box();
+    const double distance = BoxDistance(a, b);
+    const double d = i % 3 == 0 ? distance : rng.Uniform(0, 60);
+    if (distance > d * (1 + 1e-9)) {
+      EXPECT_TRUE(BoxesFartherThan(a, b, d)) << distance << " vs " << d;
+      ++farther;
+    } else {
+      EXPECT_FALSE(BoxesFartherThan(a, b, d)) << distance << " vs " << d;
+      ++nearer;
+    }
+    EXPECT_TRUE(BoxesFartherThan(a, b, -1e-9));
+  }
+  EXPECT_FALSE(BoxesFartherThan(Bounds2{Point2(0, 0), Point2(1, 1)},
+                                Bounds2{Point2(4, 5), Point2(6, 6)},
+                                std::numeric_limits<double>::infinity()));
+  EXPECT_GT(farther, 5000);
+  EXPECT_GT(nearer, 5000);
 }
 
 TEST(PrimitivesTest, SegmentIntersectionKinds) {
