@@ -4,6 +4,7 @@
 #include <fstream>
 #include <string>
 
+#include "core/map/io/formats.h"
 #include "core/map/io/map_io.h"
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
@@ -186,6 +187,23 @@ TEST(MapIoRosMapTest, RejectsBadYamlNamingTheField) {
     EXPECT_EQ(map.status().code(), absl::StatusCode::kInvalidArgument) << c.yaml;
     EXPECT_THAT(map.status().message(), HasSubstr(c.message)) << c.yaml;
   }
+}
+
+// A YAML padded with a comment to the limit is read; one byte more is refused before parsing.
+TEST(MapIoRosMapTest, YamlOverItsSizeLimitIsRefusedNamingTheFile) {
+  const std::string at_limit =
+      std::string(kYaml) + "#" + std::string(kMaxRosYamlBytes - 1 - sizeof(kYaml), 'x') + "\n";
+  ASSERT_EQ(at_limit.size(), kMaxRosYamlBytes);
+  EXPECT_TRUE(ParseRos(at_limit, kPlainPgm).ok());
+  EXPECT_TRUE(RosMapImagePath(MapFile{"map.yaml", at_limit}).ok());
+  const std::string over = at_limit + " ";
+  auto map = ParseRos(over, kPlainPgm);
+  ASSERT_FALSE(map.ok());
+  EXPECT_EQ(map.status().code(), absl::StatusCode::kResourceExhausted);
+  EXPECT_THAT(map.status().message(), HasSubstr("map.yaml: 4097 bytes exceed the limit of 4096"));
+  absl::StatusOr<std::string> image = RosMapImagePath(MapFile{"map.yaml", over});
+  ASSERT_FALSE(image.ok());
+  EXPECT_EQ(image.status().code(), absl::StatusCode::kResourceExhausted);
 }
 
 TEST(MapIoRosMapTest, TheImageFileMustHaveTheBaseNameTheYamlNames) {

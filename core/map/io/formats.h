@@ -4,6 +4,7 @@
 // the limits before allocating and returns INVALID_ARGUMENT (or RESOURCE_EXHAUSTED) with a
 // message that starts with the file name and names the line or field.
 
+#include <cstddef>
 #include <string>
 
 #include "absl/status/statusor.h"
@@ -39,6 +40,11 @@ absl::StatusOr<Terrain> ParseTerrainCsv(const MapFile& file, const LoadOptions& 
 // Height image (PGM P2/P5 or PNG): height = grey level * options.terrain_height_scale, with the
 // grey level in the image's own range (0..255, or 0..maxval / 0..65535 for 16-bit images).
 absl::StatusOr<Terrain> ParseTerrainImage(const MapFile& file, const LoadOptions& options);
+
+// The most bytes a ROS map YAML may have. Its seven short keys take a few hundred bytes, and
+// the YAML parser's time and memory grow with the document, so a larger one is refused
+// (RESOURCE_EXHAUSTED naming the file) before it is parsed.
+inline constexpr size_t kMaxRosYamlBytes = 4096;
 
 // ROS map_server YAML and the image it names (its content given separately).
 absl::StatusOr<OccupancyGrid> ParseRosMap(const MapFile& yaml, const MapFile& image,

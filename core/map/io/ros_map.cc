@@ -162,9 +162,17 @@ absl::StatusOr<OccupancyGrid> ImageToGrid(const std::string& file, const Decoded
   return grid;
 }
 
+absl::Status CheckYamlSize(const MapFile& yaml) {
+  if (yaml.bytes.size() <= kMaxRosYamlBytes) return absl::OkStatus();
+  return absl::ResourceExhaustedError(absl::StrCat(yaml.name, ": ", yaml.bytes.size(),
+                                                   " bytes exceed the limit of ", kMaxRosYamlBytes,
+                                                   " bytes for a ROS map YAML"));
+}
+
 }  // namespace
 
 absl::StatusOr<std::string> RosMapImagePath(const MapFile& yaml) {
+  if (absl::Status s = CheckYamlSize(yaml); !s.ok()) return s;
   try {
     const YAML::Node root = YAML::Load(yaml.bytes);
     if (!root.IsMap() || !root["image"] || !root["image"].IsScalar()) {
@@ -184,6 +192,7 @@ absl::StatusOr<OccupancyGrid> ParseRosMap(const MapFile& yaml, const MapFile& im
   if (auto s = map_io_internal::CheckFileSize(yaml.name, yaml.bytes.size(), limits); !s.ok()) {
     return s;
   }
+  if (absl::Status s = CheckYamlSize(yaml); !s.ok()) return s;
   absl::StatusOr<RosMapInfo> info;
   try {
     const YAML::Node root = YAML::Load(yaml.bytes);
