@@ -296,17 +296,19 @@ Bounds2 BoundingBox(const std::vector<Point2>& points) {
   return box;
 }
 
+// The gaps between two boxes along x and along y (0 where they overlap).
+static Point2 BoxGaps(const Bounds2& a, const Bounds2& b) {
+  return Point2(std::max({0.0, a.min.x() - b.max.x(), b.min.x() - a.max.x()}),
+                std::max({0.0, a.min.y() - b.max.y(), b.min.y() - a.max.y()}));
+}
+
 double BoxDistance(const Bounds2& a, const Bounds2& b) {
-  const double dx = std::max({0.0, a.min.x() - b.max.x(), b.min.x() - a.max.x()});
-  const double dy = std::max({0.0, a.min.y() - b.max.y(), b.min.y() - a.max.y()});
-  return std::hypot(dx, dy);
+  const Point2 gap = BoxGaps(a, b);
+  return std::hypot(gap.x(), gap.y());
 }
 
 bool BoxesFartherThan(const Bounds2& a, const Bounds2& b, double d) {
-  if (d < 0) return true;
-  const double dx = std::max({0.0, a.min.x() - b.max.x(), b.min.x() - a.max.x()});
-  const double dy = std::max({0.0, a.min.y() - b.max.y(), b.min.y() - a.max.y()});
-  return dx * dx + dy * dy > d * d * (1.0 + 1e-12);
+  return d < 0 || BoxGaps(a, b).squaredNorm() > d * d * (1.0 + 1e-12);
 }
 
 bool IsConvex(const std::vector<Point2>& polygon) {
