@@ -43,9 +43,10 @@ void GridSearchContext::Begin(size_t cell_count, bool with_clearance) {
   open_.clear();
 }
 
-double CellCenterClearance(const OccupancyGrid& grid, Cell cell) {
-  if (grid.IsBlocked(cell)) return 0.0;
-  const double d = grid.DistanceToObstacle(cell.x, cell.y);
+namespace {
+
+// CellCenterClearance of an unblocked cell whose distance-field value is `d`.
+double CenterClearanceFrom(const OccupancyGrid& grid, Cell cell, double d) {
   if (!std::isfinite(d)) return d;
   const double r = grid.resolution();
   // The nearest blocked centre is d away, so the nearest square is at most d - r/2 away, and
@@ -62,15 +63,71 @@ double CellCenterClearance(const OccupancyGrid& grid, Cell cell) {
   return best * r;
 }
 
-bool CellUsable(const OccupancyGrid& grid, Cell cell, double clearance) {
-  if (!grid.InBounds(cell) || grid.IsBlocked(cell)) return false;
+// CellUsable of an unblocked cell inside the grid whose distance-field value is `d`.
+bool UsableFrom(const OccupancyGrid& grid, Cell cell, double clearance, double d) {
   if (clearance <= 0) return true;
-  const double d = grid.DistanceToObstacle(cell.x, cell.y);
   const double r = grid.resolution();
   // The nearest blocked square is between d - r*sqrt(2)/2 and d - r/2 away.
   if (d - r * kHalfDiagonal >= clearance) return true;
   if (d - r / 2 < clearance) return false;
-  return CellCenterClearance(grid, cell) >= clearance;
+  return CenterClearanceFrom(grid, cell, d) >= clearance;
+}
+
+// The distance field's value at `cell` (world units) when some blocked cell centre lies within
+// `limit` of the cell's centre, found by scanning square rings outwards; otherwise a value above
+// `limit` (+infinity when no blocked cell lies within the scanned rings).
+double LocalDistanceToObstacle(const OccupancyGrid& grid, Cell cell, double limit) {
+  const double r = grid.resolution();
+  const double rings = std::min(std::floor(limit / r) + 1.0,
+                                static_cast<double>(std::max(grid.width(), grid.height())));
+  int64_t best = -1;  // squared distance in cells to the nearest blocked centre seen
+  auto visit = [&](int x, int y) {
+    if (!grid.IsBlocked(x, y)) return;
+    const int64_t dx = x - cell.x, dy = y - cell.y;
+    const int64_t squared = dx * dx + dy * dy;
+    if (best < 0 || squared < best) best = squared;
+  };
+  for (int k = 1; k <= static_cast<int>(rings); ++k) {
+    // Every cell of ring k is at least k cells away.
+    if (best >= 0 && best <= static_cast<int64_t>(k) * k) break;
+    const int x0 = std::max(cell.x - k, 0), x1 = std::min(cell.x + k, grid.width() - 1);
+    const int y0 = std::max(cell.y - k + 1, 0), y1 = std::min(cell.y + k - 1, grid.height() - 1);
+    // The ring's sides that lie inside the grid.
+    const bool bottom = cell.y - k >= 0, top = cell.y + k < grid.height();
+    const bool left = cell.x - k >= 0, right = cell.x + k < grid.width();
+    if (!bottom && !top && !left && !right) break;
+    for (int x = x0; x <= x1; ++x) {
+      if (bottom) visit(x, cell.y - k);
+      if (top) visit(x, cell.y + k);
+    }
+    for (int y = y0; y <= y1; ++y) {
+      if (left) visit(cell.x - k, y);
+      if (right) visit(cell.x + k, y);
+    }
+  }
+  if (best < 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(static_cast<double>(best)) * r;
+}
+
+}  // namespace
+
+double CellCenterClearance(const OccupancyGrid& grid, Cell cell) {
+  if (grid.IsBlocked(cell)) return 0.0;
+  return CenterClearanceFrom(grid, cell, grid.DistanceToObstacle(cell.x, cell.y));
+}
+
+bool CellUsable(const OccupancyGrid& grid, Cell cell, double clearance) {
+  if (!grid.InBounds(cell) || grid.IsBlocked(cell)) return false;
+  if (clearance <= 0) return true;
+  return UsableFrom(grid, cell, clearance, grid.DistanceToObstacle(cell.x, cell.y));
+}
+
+bool CellUsableWithoutField(const OccupancyGrid& grid, Cell cell, double clearance) {
+  if (!grid.InBounds(cell) || grid.IsBlocked(cell)) return false;
+  if (clearance <= 0) return true;
+  // Beyond this distance of the nearest blocked centre a cell is usable whatever the value.
+  const double limit = clearance + grid.resolution() * kHalfDiagonal;
+  return UsableFrom(grid, cell, clearance, LocalDistanceToObstacle(grid, cell, limit));
 }
 
 bool GridMoveAllowed(const OccupancyGrid& grid, Cell from, Cell to,

@@ -108,6 +108,10 @@ double CellCenterClearance(const OccupancyGrid& grid, Cell cell);
 
 // Whether `cell` is inside the grid and usable for `clearance` (see above).
 bool CellUsable(const OccupancyGrid& grid, Cell cell, double clearance);
+// The same verdict from the cells within about `clearance` of `cell`, without the grid's
+// distance field: for checking a few cells (a request's start and goal) of a grid whose field
+// may never be needed.
+bool CellUsableWithoutField(const OccupancyGrid& grid, Cell cell, double clearance);
 
 // Whether a single move between neighbouring cells (Chebyshev distance 1) is allowed under the
 // options' rules: both ends usable and, for a diagonal without corner cutting, both orthogonal

@@ -20,7 +20,7 @@ absl::StatusOr<Cell> EndCell(const OccupancyGrid& grid, const Point3& p, double 
         "%s (%g, %g) lies in cell (%d, %d), outside the planning grid (%d x %d cells of %g)", what,
         p.x(), p.y(), c.x, c.y, grid.width(), grid.height(), grid.resolution()));
   }
-  if (!CellUsable(grid, c, clearance)) {
+  if (!CellUsableWithoutField(grid, c, clearance)) {
     return absl::FailedPreconditionError(absl::StrFormat(
         "%s (%g, %g) lies in cell (%d, %d) of the planning grid (cells of %g), which is blocked "
         "or whose centre is closer than the clearance %g to a blocked cell",

@@ -53,9 +53,17 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
     grid.blocked_count_ += grid.blocked_[i];
   }
   grid.cells_ = std::move(cells);
-  grid.distance_ = SquaredDistanceTransform(width, height, grid.blocked_);
-  for (double& d : grid.distance_) d = std::sqrt(d) * resolution;
   return grid;
+}
+
+const std::vector<double>& OccupancyGrid::ComputeDistanceField() const {
+  LazyDistanceField& field = *distance_;
+  std::call_once(field.once, [&] {
+    field.values = SquaredDistanceTransform(width_, height_, blocked_);
+    for (double& d : field.values) d = std::sqrt(d) * resolution_;
+    field.ready.store(true, std::memory_order_release);
+  });
+  return field.values;
 }
 
 Cell OccupancyGrid::CellAt(const Point2& p) const {

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -13,8 +16,10 @@ namespace swarmplan {
 // -1 unknown. Cell (x, y) covers [origin + (x, y) * resolution, origin + (x + 1, y + 1) *
 // resolution) in world coordinates. Immutable; built once, shared between jobs.
 //
-// The grid precomputes the exact Euclidean distance (in world units) from every cell centre to
-// the nearest blocked cell centre, so clearance queries are a table look-up.
+// The grid keeps the exact Euclidean distance (in world units) from every cell centre to the
+// nearest blocked cell centre, so clearance queries are a table look-up. The field is computed on
+// its first use (thread-safe) and shared by copies of the grid: a grid that only validates a
+// request, or plans without a clearance, never pays for it.
 class OccupancyGrid {
  public:
   static constexpr int8_t kUnknown = -1;
@@ -45,8 +50,13 @@ class OccupancyGrid {
 
   // Distance in world units from the centre of (x, y) to the nearest blocked cell centre
   // (infinity when no cell is blocked). 0 on blocked cells.
-  double DistanceToObstacle(int x, int y) const { return distance_[Index(x, y)]; }
-  const std::vector<double>& distance_field() const { return distance_; }
+  double DistanceToObstacle(int x, int y) const { return distance_field()[Index(x, y)]; }
+  const std::vector<double>& distance_field() const {
+    return distance_->ready.load(std::memory_order_acquire) ? distance_->values
+                                                            : ComputeDistanceField();
+  }
+  // Whether the distance field has been computed (by this grid or a copy).
+  bool distance_field_computed() const { return distance_->ready.load(std::memory_order_acquire); }
 
   Point2 CellCenter(Cell c) const { return origin_ + Point2(c.x + 0.5, c.y + 0.5) * resolution_; }
   // The cell containing a world point (may be outside the grid).
@@ -58,13 +68,20 @@ class OccupancyGrid {
   OccupancyGrid() = default;
   size_t Index(int x, int y) const { return static_cast<size_t>(y) * width_ + x; }
 
+  struct LazyDistanceField {
+    std::once_flag once;
+    std::atomic<bool> ready{false};
+    std::vector<double> values;
+  };
+  const std::vector<double>& ComputeDistanceField() const;
+
   int width_ = 0;
   int height_ = 0;
   double resolution_ = 1.0;
   Point2 origin_ = Point2::Zero();
   std::vector<int8_t> cells_;
   std::vector<uint8_t> blocked_;
-  std::vector<double> distance_;
+  std::shared_ptr<LazyDistanceField> distance_ = std::make_shared<LazyDistanceField>();
   int64_t blocked_count_ = 0;
 };
 

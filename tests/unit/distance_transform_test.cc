@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <thread>
 #include <vector>
 
 #include "core/map/occupancy_grid.h"
@@ -87,6 +88,24 @@ TEST(DistanceTransformTest, GridStoresWorldDistances) {
   EXPECT_DOUBLE_EQ(grid->DistanceToObstacle(0, 0), 0.0);
   EXPECT_DOUBLE_EQ(grid->DistanceToObstacle(3, 0), 1.5);
   EXPECT_DOUBLE_EQ(grid->DistanceToObstacle(3, 2), 0.5 * std::sqrt(13.0));
+}
+
+TEST(DistanceTransformTest, GridComputesItsFieldOnFirstUseOnceForAllCopies) {
+  std::vector<int8_t> cells(64 * 48, OccupancyGrid::kFree);
+  cells[5 * 64 + 7] = OccupancyGrid::kOccupied;
+  const OccupancyGrid grid = *OccupancyGrid::Create(64, 48, cells, 0.25);
+  const OccupancyGrid copy = grid;
+  EXPECT_FALSE(grid.distance_field_computed());
+  std::vector<const std::vector<double>*> seen(8);
+  std::vector<std::thread> threads;
+  for (size_t i = 0; i < seen.size(); ++i) {
+    threads.emplace_back([&, i] { seen[i] = &(i % 2 == 0 ? grid : copy).distance_field(); });
+  }
+  for (std::thread& t : threads) t.join();
+  EXPECT_TRUE(grid.distance_field_computed());
+  EXPECT_TRUE(copy.distance_field_computed());
+  for (const std::vector<double>* field : seen) EXPECT_EQ(field, seen[0]);
+  EXPECT_DOUBLE_EQ(copy.DistanceToObstacle(7, 8), 0.75);
 }
 
 }  // namespace

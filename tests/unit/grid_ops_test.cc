@@ -9,6 +9,7 @@
 #include "core/path_metrics.h"
 #include "gtest/gtest.h"
 #include "tests/unit/grid_planner_test_util.h"
+#include "tests/unit/seed_test_maps.h"
 
 namespace swarmplan {
 namespace {
@@ -201,6 +202,20 @@ TEST(GridSpaceTest, EndsReplacedWhenFreeAndJoinedOtherwise) {
   ASSERT_TRUE(space.ok()) << space.status();
   EXPECT_EQ(space->WorldPath({Cell{0, 0}}), (Path{problem.start, problem.goal}));
   EXPECT_NEAR(space->PathLength({Cell{0, 0}}), (problem.goal - problem.start).norm(), 1e-12);
+}
+
+// Validating a request builds the space: its raster's distance field waits for a planner that
+// needs it.
+TEST(GridSpaceTest, RasterOfAShapeWorldComputesNoDistanceFieldForItsEnds) {
+  Problem problem = seed_testing::MakeProblem(seed_testing::BlockWorld(), {5, 5}, {35, 25}, 1.0);
+  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, 0.0);
+  ASSERT_TRUE(space.ok()) << space.status();
+  EXPECT_FALSE(space->grid->distance_field_computed());
+
+  problem.start = Point3(9.5, 15, 0);  // 0.5 from the block: its cell is not usable
+  space = MakeGridSpace(problem, 0.0);
+  ASSERT_FALSE(space.ok());
+  EXPECT_TRUE(absl::IsFailedPrecondition(space.status())) << space.status();
 }
 
 }  // namespace

@@ -285,6 +285,50 @@ TEST(GridSearchTest, CellCenterClearanceIsExact) {
   }
 }
 
+TEST(GridSearchTest, CellUsableWithoutFieldAgreesWithCellUsable) {
+  constexpr double kHalfDiagonal = kSqrt2 / 2;
+  struct Case {
+    int width, height;
+    double blocked_ratio, resolution;
+  };
+  const Case cases[] = {{30, 25, 0.08, 1.0},
+                        {40, 40, 0.005, 0.3},
+                        {3, 200, 0.02, 2.5},
+                        {200, 2, 0.01, 0.7},
+                        {12, 12, 0.0, 1.0}};
+  uint64_t seed = 21;
+  for (const Case& k : cases) {
+    std::vector<int8_t> cells(static_cast<size_t>(k.width) * k.height);
+    Rng rng(seed++);
+    for (int8_t& c : cells) c = rng.Bernoulli(k.blocked_ratio) ? OccupancyGrid::kOccupied : 0;
+    const OccupancyGrid grid = *OccupancyGrid::Create(k.width, k.height, cells, k.resolution);
+    for (int y = 0; y < grid.height(); ++y) {
+      for (int x = 0; x < grid.width(); ++x) {
+        const double r = k.resolution;
+        std::vector<double> clearances = {0.0, 0.4 * r, r, 1.3 * r, 4.2 * r, 1e3 * r};
+        // The thresholds CellUsable compares against, where rounding would show.
+        for (int n = 1; n < 40; ++n) {
+          const double d = std::sqrt(static_cast<double>(n)) * r;
+          clearances.push_back(d - r / 2);
+          clearances.push_back(d - r * kHalfDiagonal);
+        }
+        for (double c : clearances) {
+          ASSERT_EQ(CellUsableWithoutField(grid, {x, y}, c), CellUsable(grid, {x, y}, c))
+              << k.width << "x" << k.height << " cell " << x << "," << y << " clearance " << c;
+        }
+      }
+    }
+  }
+}
+
+TEST(GridSearchTest, CellUsableWithoutFieldLeavesTheFieldUncomputed) {
+  const OccupancyGrid grid = RandomGrid(50, 50, 0.05, 3);
+  for (int x = 0; x < 50; ++x) CellUsableWithoutField(grid, {x, 7}, 2.5);
+  EXPECT_FALSE(grid.distance_field_computed());
+  CellUsable(grid, {3, 7}, 2.5);
+  EXPECT_TRUE(grid.distance_field_computed());
+}
+
 TEST(GridSearchTest, ClearanceKeepsAwayFromObstacles) {
   const OccupancyGrid grid = AsciiGrid({
       "..........",
