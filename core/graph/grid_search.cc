@@ -63,9 +63,9 @@ double CenterClearanceFrom(const OccupancyGrid& grid, Cell cell, double d) {
   return best * r;
 }
 
-// CellUsable of an unblocked cell inside the grid whose distance-field value is `d`.
+// CellUsable of an unblocked cell inside the grid whose distance-field value is `d`, for a
+// positive clearance.
 bool UsableFrom(const OccupancyGrid& grid, Cell cell, double clearance, double d) {
-  if (clearance <= 0) return true;
   const double r = grid.resolution();
   // The nearest blocked square is between d - r*sqrt(2)/2 and d - r/2 away.
   if (d - r * kHalfDiagonal >= clearance) return true;

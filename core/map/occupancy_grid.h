@@ -52,8 +52,7 @@ class OccupancyGrid {
   // (infinity when no cell is blocked). 0 on blocked cells.
   double DistanceToObstacle(int x, int y) const { return distance_field()[Index(x, y)]; }
   const std::vector<double>& distance_field() const {
-    return distance_->ready.load(std::memory_order_acquire) ? distance_->values
-                                                            : ComputeDistanceField();
+    return distance_field_computed() ? distance_->values : ComputeDistanceField();
   }
   // Whether the distance field has been computed (by this grid or a copy).
   bool distance_field_computed() const { return distance_->ready.load(std::memory_order_acquire); }
