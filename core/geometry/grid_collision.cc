@@ -97,21 +97,27 @@ double GridCollisionChecker::LocalClearance(const Point2& u) const {
     // most half a diagonal beyond its centre.
     return std::max(0.0, centre_distance - offset - kHalfCellDiagonal - 1e-12);
   }
-  double best = upper;
+  // Squared distances in the scan, one square root at the end.
+  double best_squared = upper * upper;
+  bool found = false;
   const int x0 = std::max(0, static_cast<int>(std::ceil(u.x() - upper)) - 1);
   const int x1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(u.x() + upper)));
   const int y0 = std::max(0, static_cast<int>(std::ceil(u.y() - upper)) - 1);
   const int y1 = std::min(grid_.height() - 1, static_cast<int>(std::floor(u.y() + upper)));
   for (int y = y0; y <= y1; ++y) {
     const double dy = std::max({0.0, y - u.y(), u.y() - (y + 1)});
-    if (dy >= best) continue;
+    if (dy * dy >= best_squared) continue;
     for (int x = x0; x <= x1; ++x) {
       if (!grid_.IsBlocked(x, y)) continue;
       const double dx = std::max({0.0, x - u.x(), u.x() - (x + 1)});
-      best = std::min(best, std::hypot(dx, dy));
+      const double squared = dx * dx + dy * dy;
+      if (squared < best_squared) {
+        best_squared = squared;
+        found = true;
+      }
     }
   }
-  return best;
+  return found ? std::min(upper, std::sqrt(best_squared)) : upper;
 }
 
 double GridCollisionChecker::Clearance(const Point3& p) const {
