@@ -97,21 +97,9 @@ Wall WallAcross(const CollisionChecker& checker, const Map& map, const Path& pat
   return {at.point - right * normal, at.point + left * normal};
 }
 
-}  // namespace
-
-absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
-                                                    const StopToken& stop) {
-  if (problem.map == nullptr) return absl::InvalidArgumentError("problem has no map");
-  if (count < 1 || count > kMaxSeedPaths) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("seed path count must be in [1, ", kMaxSeedPaths, "], got ", count));
-  }
-  const PlannerInfo info = ExactInfoFor(problem.map->kind());
-  absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, {});
-  if (!params.ok()) return params.status();
-  const std::unique_ptr<Planner> planner = info.factory(*params);
-  if (problem.map->is_3d()) count = 1;
-
+// The seeds for `problem` with its clearance set to the one they keep.
+absl::StatusOr<std::vector<SeedPath>> SeedPathsKeeping(const Problem& problem, Planner& planner,
+                                                       int count, const StopToken& stop) {
   std::vector<SeedPath> seeds;
   std::vector<Wall> walls;
   Problem cut = problem;
@@ -119,7 +107,7 @@ absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int 
   NullObserver observer;
   while (static_cast<int>(seeds.size()) < count) {
     if (stop.Check(0) != StopReason::kNone) break;
-    absl::StatusOr<SearchResult> found = planner->Solve(cut, stop, observer);
+    absl::StatusOr<SearchResult> found = planner.Solve(cut, stop, observer);
     if (!found.ok()) {
       if (seeds.empty()) return found.status();
       break;
@@ -149,6 +137,36 @@ absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int 
     if (!walled) break;
   }
   return seeds;
+}
+
+}  // namespace
+
+absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
+                                                    const StopToken& stop) {
+  if (problem.map == nullptr) return absl::InvalidArgumentError("problem has no map");
+  if (count < 1 || count > kMaxSeedPaths) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("seed path count must be in [1, ", kMaxSeedPaths, "], got ", count));
+  }
+  const PlannerInfo info = ExactInfoFor(problem.map->kind());
+  absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, {});
+  if (!params.ok()) return params.status();
+  const std::unique_ptr<Planner> planner = info.factory(*params);
+  if (problem.map->is_3d()) count = 1;
+
+  const double hard = problem.clearance;
+  const double preferred = problem.fleet.preferred_clearance;
+  std::vector<double> ladder = {hard};
+  if (!problem.map->is_3d() && preferred > hard)
+    ladder = {preferred, 0.5 * (hard + preferred), hard};
+  for (const double clearance : ladder) {
+    Problem keeping = problem;
+    keeping.clearance = clearance;
+    absl::StatusOr<std::vector<SeedPath>> seeds = SeedPathsKeeping(keeping, *planner, count, stop);
+    if (clearance == hard || (seeds.ok() && !seeds->empty())) return seeds;
+    if (stop.Check(0) != StopReason::kNone) return std::vector<SeedPath>();
+  }
+  return std::vector<SeedPath>();
 }
 
 }  // namespace swarmplan

@@ -27,6 +27,9 @@ struct SeedPath {
 // further corridor. On terrain the lattice optimum alone (terrain-lattice). Empty when no path
 // exists. The exact planners' errors (an endpoint they cannot use) are returned as they are;
 // `stop` is passed to every search, and a tripped stop ends the list early.
+// With a preferred clearance above the hard one (problem.fleet), the seeds are first sought
+// keeping the preferred clearance, then halfway between the two, then the hard clearance: the
+// first that gives a path gives every seed, so a fleet's seeds leave room where the map does.
 absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
                                                     const StopToken& stop);
 

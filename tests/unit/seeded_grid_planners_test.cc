@@ -123,6 +123,12 @@ TEST(SeededGridPlannersTest, PaperInitialisationRunsThePapersSearch) {
 TEST(SeededGridPlannersTest, FleetObjectiveMovesThePathAwayFromTheWalls) {
   Problem problem = MakeProblem(TwoDoorGrid(), {12.5, 5.5}, {6.5, 25.5}, 0.5);
   problem.fleet.preferred_clearance = 2.5;
+  // The optimum with the hard clearance hugs the walls: the seeds keep the preferred clearance
+  // where the map allows, and the result must do at least as well by the objective.
+  absl::StatusOr<PlanResult> hugging = Plan("exact-any-angle", problem, 1);
+  ASSERT_TRUE(hugging.ok()) << hugging.status();
+  absl::StatusOr<FleetTerms> hugging_terms = EvaluateFleetObjective(problem, hugging->raw_path);
+  ASSERT_TRUE(hugging_terms.ok()) << hugging_terms.status();
   for (const std::string& algorithm : kGridPlanners) {
     SCOPED_TRACE(algorithm);
     absl::StatusOr<PlanResult> result = Plan(algorithm, problem, 40);
@@ -136,8 +142,9 @@ TEST(SeededGridPlannersTest, FleetObjectiveMovesThePathAwayFromTheWalls) {
     ASSERT_TRUE(terms.ok()) << terms.status();
     EXPECT_NEAR(result->fitness, terms->Total(), 1e-9 * terms->Total());
     ASSERT_TRUE(result->objective.has_value() && result->seed_objective.has_value());
-    EXPECT_LT(result->objective->Total(), 0.98 * result->seed_objective->Total())
-        << "seed " << result->seed_objective->Total();
+    EXPECT_LE(result->objective->Total(), result->seed_objective->Total() * (1 + 1e-9));
+    EXPECT_LT(result->objective->Total(), 0.9 * hugging_terms->Total())
+        << "hugging " << hugging_terms->Total();
   }
 }
 
