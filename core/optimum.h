@@ -20,9 +20,10 @@ struct Optimum {
 };
 
 // The exact planner of each map kind: `exact-any-angle` on occupancy grids (the Euclidean
-// shortest path among the blocked cells; with a clearance, on the grid inflated by it),
-// `visibility-graph` on shape worlds, `terrain-lattice` on terrain (the optimum on the voxel
-// lattice, an upper bound on the continuous one).
+// shortest path among the blocked cells; with a clearance, the best of the optimum on sub-cells
+// that keep it and the lower bound's path moved off the walls: an upper bound, see
+// ExactAnyAngleInfo), `visibility-graph` on shape worlds, `terrain-lattice` on terrain (the optimum
+// on the voxel lattice, an upper bound on the continuous one).
 const char* ExactPlannerFor(MapKind kind);
 
 // Runs the exact planner of the problem's map kind with its default parameters, for at most

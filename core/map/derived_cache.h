@@ -13,7 +13,7 @@
 
 namespace swarmplan {
 
-// Structures derived from one immutable map (corner sets, inflated grids, grown obstacles),
+// Structures derived from one immutable map (corner sets, clearance grids, grown obstacles),
 // built lazily on first use and shared by every job on that map. Thread-safe. Each key is
 // built at most once while it stays cached: concurrent callers of the same key wait for the
 // one build, callers of other keys never wait for it. At most `capacity` keys are kept; the

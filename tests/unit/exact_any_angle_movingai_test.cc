@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "absl/strings/str_cat.h"
 #include "core/geometry/collision.h"
 #include "core/map/io/map_io.h"
 #include "core/map/map.h"
@@ -22,8 +23,9 @@ namespace {
 using ::swarmplan::testing::NullObserver;
 
 absl::StatusOr<PlanResult> Plan(const std::string& algorithm, const MapPtr& map,
-                                const Point2& start, const Point2& goal, double clearance = 0) {
-  return ::swarmplan::testing::PlanOnMap(algorithm, map, start, goal, clearance);
+                                const Point2& start, const Point2& goal, double clearance = 0,
+                                const ParamValues& params = {}) {
+  return ::swarmplan::testing::PlanOnMap(algorithm, map, start, goal, clearance, params);
 }
 
 // Three scenarios per file, from buckets spread from the shortest to the middle one (longer
@@ -104,6 +106,41 @@ TEST(ExactAnyAngleMovingAiTest, KeepsTheClearance) {
     EXPECT_TRUE(checker->PathFree(result->raw_path, 0.8)) << "bucket " << s.bucket;
   }
   EXPECT_GT(found, 0);
+}
+
+// With a clearance the optimum lies between the lower bound and the path returned; theta-star's
+// path keeps the clearance, so it is never shorter than the lower bound. On this query the upper
+// bound's sub-cells miss a diagonal gap between two blocked cells that theta-star passes.
+TEST(ExactAnyAngleMovingAiTest, ClearanceOptimumIsBracketedOnBerlin) {
+  SWARMPLAN_REQUIRE_BENCHMARKS("movingai/Berlin_0_256.map");
+  absl::StatusOr<Map> loaded =
+      LoadMapFile(::swarmplan::testing::BenchmarksDir() + "/movingai/Berlin_0_256.map");
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const MapPtr map = std::make_shared<const Map>(*std::move(loaded));
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*map);
+  const Point2 start(26.5, 151.5), goal(243.5, 222.5);
+  constexpr double kClearance = 0.5;
+  absl::StatusOr<PlanResult> upper = Plan("exact-any-angle", map, start, goal, kClearance);
+  absl::StatusOr<PlanResult> lower =
+      Plan("exact-any-angle", map, start, goal, kClearance, {{"bound", std::string("lower")}});
+  absl::StatusOr<PlanResult> theta = Plan("theta-star", map, start, goal, kClearance);
+  ASSERT_TRUE(upper.ok()) << upper.status();
+  ASSERT_TRUE(lower.ok()) << lower.status();
+  ASSERT_TRUE(theta.ok()) << theta.status();
+  ASSERT_TRUE(upper->found && lower->found && theta->found);
+  const Path& path = upper->raw_path;
+  EXPECT_EQ(path.front(), Point3(start.x(), start.y(), 0));
+  EXPECT_EQ(path.back(), Point3(goal.x(), goal.y(), 0));
+  EXPECT_TRUE(checker->PathFree(path, kClearance));
+  EXPECT_TRUE(checker->PathFree(theta->raw_path, kClearance));
+  const double u = PathLength(path), l = PathLength(lower->raw_path);
+  const double t = PathLength(theta->raw_path);
+  EXPECT_LE(l, t * (1 + 1e-9));
+  EXPECT_LE(l, u * (1 + 1e-9));
+  EXPECT_LE(u, t * (1 + 1e-9));
+  RecordProperty("upper", absl::StrCat(u));
+  RecordProperty("lower", absl::StrCat(l));
+  RecordProperty("theta", absl::StrCat(t));
 }
 
 }  // namespace

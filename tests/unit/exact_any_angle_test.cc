@@ -260,7 +260,7 @@ TEST(ExactAnyAngleTest, KeepsTheClearanceOnRandomGrids) {
     const Point2 s = end_point(), t = end_point();
     absl::StatusOr<PlanResult> result = Plan("exact-any-angle", g.map, s, t, clearance);
     if (!result.ok()) {
-      // Only an endpoint the inflated grid cannot use is refused.
+      // Only an endpoint the planning grid cannot use is refused.
       EXPECT_EQ(result.status().code(), absl::StatusCode::kFailedPrecondition);
       continue;
     }

@@ -16,9 +16,11 @@ class NullObserver final : public Observer {
 // RunPlan of the default registry's `algorithm` from start to goal (world coordinates, z = 0).
 inline absl::StatusOr<PlanResult> PlanOnMap(const std::string& algorithm, const MapPtr& map,
                                             const Point2& start, const Point2& goal,
-                                            double clearance = 0.0) {
+                                            double clearance = 0.0,
+                                            const ParamValues& params = {}) {
   PlanRequest request;
   request.algorithm = algorithm;
+  request.params = params;
   request.problem.map = map;
   request.problem.start = Point3(start.x(), start.y(), 0);
   request.problem.goal = Point3(goal.x(), goal.y(), 0);

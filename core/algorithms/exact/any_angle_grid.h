@@ -9,9 +9,15 @@
 
 namespace swarmplan {
 
+// Which side of the optimum with a clearance the planning grid's optimum lies on.
+enum class ClearanceBound {
+  kUpper,  // only cells that keep the clearance: its paths are feasible
+  kLower,  // blocked only where a cell lies wholly closer than the clearance: never longer
+};
+
 // What the exact any-angle search needs of one (grid, clearance): the planning grid (the map's
-// own grid for clearance 0, otherwise the grid inflated by the clearance) and, per cell row,
-// its maximal runs of free cells. Immutable; cached with the map (AnyAngleGridFor).
+// own grid for clearance 0, otherwise ClearanceGrid) and, per cell row, its maximal runs of
+// free cells. Immutable; cached with the map (AnyAngleGridFor).
 class AnyAngleGrid {
  public:
   // Free cells [begin, end) of one row; in grid coordinates the run covers x in [begin, end].
@@ -21,8 +27,10 @@ class AnyAngleGrid {
   };
 
   // `grid` must outlive the result when clearance is 0 (it is the planning grid then).
-  static AnyAngleGrid Build(const OccupancyGrid& grid, double clearance);
+  static AnyAngleGrid Build(const OccupancyGrid& grid, double clearance,
+                            ClearanceBound bound = ClearanceBound::kUpper);
 
+  // Same origin as the map's grid; its cells subdivide the map's cells when there is a clearance.
   const OccupancyGrid& planning_grid() const { return *planning_; }
   int width() const { return planning_->width(); }
   int height() const { return planning_->height(); }
@@ -33,23 +41,32 @@ class AnyAngleGrid {
   const Run* RunsEnd(int y) const;
   // The run of row y holding cell x, or nullptr when that cell is blocked.
   const Run* RunAt(int y, int x) const;
-  // Bytes held by the runs and, when inflated, the inflated grid.
+  // Bytes held by the runs and, with a clearance, the planning grid.
   int64_t MemoryBytes() const;
 
  private:
-  std::shared_ptr<const OccupancyGrid> inflated_;  // null when the clearance is 0
+  std::shared_ptr<const OccupancyGrid> subdivided_;  // null when the clearance is 0
   const OccupancyGrid* planning_ = nullptr;
   std::vector<Run> runs_;
   std::vector<int> row_start_;  // height + 1 offsets into runs_
 };
 
-// The cells of `grid` a robot of radius `clearance` (world units) may occupy: a cell is blocked
-// when its closed square comes closer than clearance + resolution / 16 to a blocked square (the
-// sixteenth keeps paths along the inflated boundary acceptable to the grid collision checker,
-// whose clearance test may be that much pessimistic). Cells outside keep their own state.
-OccupancyGrid InflateGrid(const OccupancyGrid& grid, double clearance);
+// Map cells per axis of the planning grid's cells for a clearance: 4 while the subdivided grid
+// stays within kMaxSubdividedCells, else 2, else 1.
+int ClearanceSubdivision(const OccupancyGrid& grid);
+inline constexpr int64_t kMaxSubdividedCells = 4LL * 1024 * 1024;
+
+// The grid a robot of radius `clearance` (world units, > 0) plans on: every cell of `grid`
+// split into ClearanceSubdivision(grid)^2 cells. kUpper blocks a cell whose closed square comes
+// closer than the clearance to a blocked square of `grid`, so every point of a free cell keeps
+// the clearance; kLower blocks a cell only when its centre lies closer than the clearance minus
+// half its diagonal (or inside a blocked square), so every point that keeps the clearance lies
+// in a free cell. Shortest paths on the two bracket the optimum with the clearance; the gap
+// shrinks with the cell size. The map's edge is no obstacle.
+OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, ClearanceBound bound);
 
 // The cached AnyAngleGrid of a grid map for `clearance` (built on first use, shared by jobs).
-std::shared_ptr<const AnyAngleGrid> AnyAngleGridFor(const Map& map, double clearance);
+std::shared_ptr<const AnyAngleGrid> AnyAngleGridFor(const Map& map, double clearance,
+                                                    ClearanceBound bound = ClearanceBound::kUpper);
 
 }  // namespace swarmplan

@@ -1,0 +1,180 @@
+// exact-any-angle with a clearance: the optimum lies between the lower bound (bound=lower) and
+// the path returned (bound=upper, the default), checked against a closed form, theta-star and
+// the sub-cell grids' own definitions.
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "core/algorithms/exact/any_angle_grid.h"
+#include "core/geometry/collision.h"
+#include "core/map/map.h"
+#include "core/path_metrics.h"
+#include "gtest/gtest.h"
+#include "tests/unit/plan_test_support.h"
+
+namespace swarmplan {
+namespace {
+
+const ParamValues kLowerBound = {{"bound", std::string("lower")}};
+
+MapPtr GridMap(int width, int height, const std::vector<Cell>& blocked) {
+  std::vector<int8_t> cells(static_cast<size_t>(width) * height, OccupancyGrid::kFree);
+  for (const Cell& c : blocked) cells[static_cast<size_t>(c.y) * width + c.x] = 100;
+  absl::StatusOr<OccupancyGrid> grid = OccupancyGrid::Create(width, height, std::move(cells));
+  return std::make_shared<const Map>(Map::Data(*std::move(grid)));
+}
+
+double PlannedLength(const MapPtr& map, const std::string& algorithm, const Point2& start,
+                     const Point2& goal, double clearance, const ParamValues& params = {}) {
+  absl::StatusOr<PlanResult> result =
+      ::swarmplan::testing::PlanOnMap(algorithm, map, start, goal, clearance, params);
+  if (!result.ok() || !result->found) return -1.0;
+  return PathLength(result->raw_path);
+}
+
+// Around one blocked square at clearance r the optimum is known: a tangent to the disc of radius
+// r around the near top corner, an arc to the top, the square's width, and the mirror image.
+TEST(ExactAnyAngleClearanceTest, MatchesTheClosedFormAroundOneSquare) {
+  const MapPtr map = GridMap(21, 21, {{10, 10}});
+  const Point2 start(5.5, 10.5), goal(15.5, 10.5);
+  for (const double r : {0.5, 1.0, 2.25}) {
+    SCOPED_TRACE(r);
+    const Point2 corner(10.0, 11.0);
+    const double d = (start - corner).norm();
+    const double toward_start = std::atan2(start.y() - corner.y(), start.x() - corner.x());
+    const double tangent_angle = toward_start + 2 * std::numbers::pi - std::acos(r / d);
+    const double arc = tangent_angle - std::numbers::pi / 2;
+    const double exact = 2 * (std::sqrt(d * d - r * r) + r * arc) + 1.0;
+    absl::StatusOr<PlanResult> upper =
+        ::swarmplan::testing::PlanOnMap("exact-any-angle", map, start, goal, r);
+    ASSERT_TRUE(upper.ok()) << upper.status();
+    ASSERT_TRUE(upper->found);
+    EXPECT_TRUE(MakeCollisionChecker(*map)->PathFree(upper->raw_path, r));
+    const double lower = PlannedLength(map, "exact-any-angle", start, goal, r, kLowerBound);
+    EXPECT_LE(lower, exact);
+    EXPECT_GE(PathLength(upper->raw_path), exact);
+    EXPECT_LE(PathLength(upper->raw_path), exact * (1 + 1e-3));
+  }
+}
+
+// Every point of a free sub-cell of the upper grid keeps the clearance; every point of a blocked
+// sub-cell of the lower grid (outside the map's blocked cells) comes closer than it. Checked on a
+// 5 x 5 lattice of points per sub-cell with the map's exact checker.
+TEST(ExactAnyAngleClearanceTest, SubCellGridsKeepTheirDefinitions) {
+  std::mt19937_64 rng(11);
+  std::bernoulli_distribution blocked(0.12);
+  std::vector<Cell> cells;
+  for (int y = 0; y < 12; ++y) {
+    for (int x = 0; x < 12; ++x) {
+      if (blocked(rng)) cells.push_back({x, y});
+    }
+  }
+  const MapPtr map = GridMap(12, 12, cells);
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*map);
+  for (const double r : {0.3, 0.5, 1.2}) {
+    SCOPED_TRACE(r);
+    const OccupancyGrid upper = ClearanceGrid(*map->grid(), r, ClearanceBound::kUpper);
+    const OccupancyGrid lower = ClearanceGrid(*map->grid(), r, ClearanceBound::kLower);
+    ASSERT_EQ(upper.width(), 12 * ClearanceSubdivision(*map->grid()));
+    const double h = upper.resolution();
+    int free_cells = 0, blocked_cells = 0;
+    for (int y = 0; y < upper.height(); ++y) {
+      for (int x = 0; x < upper.width(); ++x) {
+        const bool inside_obstacle =
+            map->grid()->IsBlocked(static_cast<int>(x * h), static_cast<int>(y * h));
+        for (int i = 0; i <= 4; ++i) {
+          for (int j = 0; j <= 4; ++j) {
+            const Point3 p((x + i / 4.0) * h, (y + j / 4.0) * h, 0.0);
+            const double kept = checker->Clearance(p);
+            if (!upper.IsBlocked(x, y)) {
+              EXPECT_GE(kept, r - 1e-12) << x << "," << y;
+            }
+            if (lower.IsBlocked(x, y) && !inside_obstacle) {
+              EXPECT_LT(kept, r) << x << "," << y;
+            }
+          }
+        }
+        free_cells += upper.IsBlocked(x, y) ? 0 : 1;
+        blocked_cells += lower.IsBlocked(x, y) && !inside_obstacle ? 1 : 0;
+      }
+    }
+    EXPECT_GT(free_cells, 0);
+    // Below about half a sub-cell diagonal the lower grid blocks only the obstacles' sub-cells.
+    if (r >= 0.5) {
+      EXPECT_GT(blocked_cells, 0);
+    }
+  }
+}
+
+// On random grids: lower bound <= path returned, lower bound <= theta-star's length (a path
+// that keeps the clearance), and the path returned keeps the clearance and joins the ends.
+TEST(ExactAnyAngleClearanceTest, BoundsBracketThetaStarOnRandomGrids) {
+  std::mt19937_64 rng(5);
+  int compared = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::bernoulli_distribution blocked(0.1);
+    std::vector<Cell> cells;
+    for (int y = 0; y < 24; ++y) {
+      for (int x = 0; x < 24; ++x) {
+        if (blocked(rng) && (x > 2 || y > 2) && (x < 21 || y < 21)) cells.push_back({x, y});
+      }
+    }
+    const MapPtr map = GridMap(24, 24, cells);
+    const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*map);
+    const double r = trial % 2 == 0 ? 0.5 : 0.8;
+    const Point2 start(1.5, 1.5), goal(22.5, 22.5);
+    SCOPED_TRACE(trial);
+    absl::StatusOr<PlanResult> upper =
+        ::swarmplan::testing::PlanOnMap("exact-any-angle", map, start, goal, r);
+    ASSERT_TRUE(upper.ok()) << upper.status();
+    const double lower = PlannedLength(map, "exact-any-angle", start, goal, r, kLowerBound);
+    const double theta = PlannedLength(map, "theta-star", start, goal, r);
+    if (upper->found) {
+      const Path& path = upper->raw_path;
+      EXPECT_EQ(path.front(), Point3(start.x(), start.y(), 0));
+      EXPECT_EQ(path.back(), Point3(goal.x(), goal.y(), 0));
+      EXPECT_TRUE(checker->PathFree(path, r));
+      ASSERT_GT(lower, 0.0);
+      EXPECT_LE(lower, PathLength(path) * (1 + 1e-9));
+    }
+    if (theta > 0) {
+      ASSERT_GT(lower, 0.0);
+      EXPECT_LE(lower, theta * (1 + 1e-9));
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 20);
+}
+
+// A one-cell door at clearance 0.5 fits only with no margin at all: only a path along the
+// door's middle line keeps the clearance there. Straight through, the lower bound's own path
+// keeps it and is returned; a path that must turn into the door would have to follow that line
+// into it, which the path returned (a positive margin wherever it turns) does not: no path.
+// The lower bound and theta-star (through cell centres) pass the door either way.
+TEST(ExactAnyAngleClearanceTest, ADoorThatFitsWithNoMargin) {
+  std::vector<Cell> wall;
+  for (int y = 0; y < 7; ++y) {
+    if (y != 3) wall.push_back({5, y});
+  }
+  const MapPtr map = GridMap(11, 7, wall);
+  const Point2 start(1.5, 3.5), goal(9.5, 3.5);
+  EXPECT_NEAR(PlannedLength(map, "exact-any-angle", start, goal, 0.5), 8.0, 1e-9);
+  EXPECT_NEAR(PlannedLength(map, "exact-any-angle", start, goal, 0.5, kLowerBound), 8.0, 1e-9);
+  const Point2 low(1.5, 0.5), high(9.5, 6.5);
+  const double theta = PlannedLength(map, "theta-star", low, high, 0.5);
+  const double lower = PlannedLength(map, "exact-any-angle", low, high, 0.5, kLowerBound);
+  ASSERT_GT(theta, 0.0);
+  ASSERT_GT(lower, 0.0);
+  EXPECT_LE(lower, theta);
+  EXPECT_LT(PlannedLength(map, "exact-any-angle", low, high, 0.5), 0.0);
+  const double narrower = PlannedLength(map, "exact-any-angle", low, high, 0.45);
+  EXPECT_GE(narrower, lower * (1 - 1e-9));
+  EXPECT_LE(narrower, PlannedLength(map, "theta-star", low, high, 0.45) * (1 + 1e-9));
+}
+
+}  // namespace
+}  // namespace swarmplan
