@@ -21,41 +21,68 @@ int ClearanceSubdivision(const OccupancyGrid& grid) {
 OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, ClearanceBound bound) {
   const int s = ClearanceSubdivision(grid);
   const int w = grid.width() * s, h = grid.height() * s;
-  const auto index = [w](int x, int y) { return static_cast<size_t>(y) * w + x; };
-  std::vector<uint8_t> obstacle(static_cast<size_t>(w) * h, 0);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) obstacle[index(x, y)] = grid.IsBlocked(x / s, y / s) ? 1 : 0;
+  std::vector<int8_t> cells(static_cast<size_t>(w) * h, OccupancyGrid::kFree);
+  // In sub-cells. kUpper blocks a sub-cell whose square comes closer than `reach` to a blocked
+  // square; kLower one whose centre lies closer than `reach` less half a sub-cell diagonal (every
+  // point of it then lies closer than `reach`: distance is 1-Lipschitz).
+  const double reach = clearance / grid.resolution() * s;
+  const double lower_reach = reach - std::numbers::sqrt2 / 2;
+  // Per cell, from D, the distance between its centre and the nearest blocked cell's: every
+  // point of the cell lies at least D - sqrt(2) and at most D + sqrt(2) / 2 from the nearest
+  // blocked square. Only cells between the two need their sub-cells measured, against the
+  // blocked squares within `window` cells (those that can come closer than the clearance).
+  const double reach_cells = clearance / grid.resolution();
+  const int window = static_cast<int>(std::ceil(reach_cells)) + 1;
+  std::vector<uint8_t> mask(static_cast<size_t>(grid.width()) * grid.height());
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      mask[static_cast<size_t>(y) * grid.width() + x] = grid.IsBlocked(x, y) ? 1 : 0;
+    }
   }
-  // Distances in the planning grid's cells. kUpper: the distance between the squares of cells
-  // (i, j) and (k, l) is hypot(max(|i - k| - 1, 0), max(|j - l| - 1, 0)), the centre distance
-  // from (i, j) to the obstacle dilated by one cell in the 8-neighbourhood. kLower: a point of
-  // cell (i, j) lies within half a diagonal of its centre, which lies within the centre
-  // distance of an obstacle cell's centre.
-  std::vector<uint8_t> dilated;
-  if (bound == ClearanceBound::kUpper) {
-    dilated.assign(obstacle.size(), 0);
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        if (!obstacle[index(x, y)]) continue;
-        for (int ny = std::max(0, y - 1); ny <= std::min(h - 1, y + 1); ++ny) {
-          for (int nx = std::max(0, x - 1); nx <= std::min(w - 1, x + 1); ++nx) {
-            dilated[index(nx, ny)] = 1;
+  const std::vector<double> centre_squared =
+      SquaredDistanceTransform(grid.width(), grid.height(), mask);
+  const auto fill = [&](int x, int y) {
+    for (int j = 0; j < s; ++j) {
+      std::fill_n(cells.begin() + (static_cast<size_t>(y * s + j) * w + x * s), s,
+                  OccupancyGrid::kOccupied);
+    }
+  };
+  std::vector<Cell> near;
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      const double d = std::sqrt(centre_squared[static_cast<size_t>(y) * grid.width() + x]);
+      if (d == 0.0 || d + std::numbers::sqrt2 * (0.5 + 0.5 / s) < reach_cells) {
+        fill(x, y);
+        continue;
+      }
+      if (d - std::numbers::sqrt2 >= reach_cells) continue;
+      near.clear();
+      for (int ny = std::max(0, y - window); ny <= std::min(grid.height() - 1, y + window); ++ny) {
+        for (int nx = std::max(0, x - window); nx <= std::min(grid.width() - 1, x + window); ++nx) {
+          if (grid.IsBlocked(nx, ny)) near.push_back({nx * s, ny * s});
+        }
+      }
+      if (near.empty()) continue;
+      for (int j = 0; j < s; ++j) {
+        for (int i = 0; i < s; ++i) {
+          const int sx = x * s + i, sy = y * s + j;
+          bool blocked = false;
+          for (const Cell& c : near) {
+            if (bound == ClearanceBound::kUpper) {
+              const double gx = std::max({0, c.x - (sx + 1), sx - (c.x + s)});
+              const double gy = std::max({0, c.y - (sy + 1), sy - (c.y + s)});
+              blocked = gx * gx + gy * gy < reach * reach;
+            } else {
+              const double gx = std::max({0.0, c.x - (sx + 0.5), (sx + 0.5) - (c.x + s)});
+              const double gy = std::max({0.0, c.y - (sy + 0.5), (sy + 0.5) - (c.y + s)});
+              blocked = lower_reach > 0 && gx * gx + gy * gy < lower_reach * lower_reach;
+            }
+            if (blocked) break;
           }
+          if (blocked) cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
         }
       }
     }
-  }
-  const std::vector<double> squared =
-      SquaredDistanceTransform(w, h, bound == ClearanceBound::kUpper ? dilated : obstacle);
-  const double reach = clearance / grid.resolution() * s;
-  const double lower_reach = reach - std::numbers::sqrt2 / 2;
-  std::vector<int8_t> cells(obstacle.size(), OccupancyGrid::kFree);
-  for (size_t i = 0; i < cells.size(); ++i) {
-    const bool blocked =
-        bound == ClearanceBound::kUpper
-            ? squared[i] < reach * reach
-            : obstacle[i] || (lower_reach > 0 && squared[i] < lower_reach * lower_reach);
-    if (blocked) cells[i] = OccupancyGrid::kOccupied;
   }
   MapLimits limits;
   limits.max_cells = std::max<int64_t>(limits.max_cells, static_cast<int64_t>(cells.size()));

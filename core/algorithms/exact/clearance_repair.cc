@@ -8,6 +8,8 @@ namespace swarmplan {
 namespace {
 
 constexpr int kPushRounds = 8;
+constexpr int kTightenSweeps = 2;
+constexpr int kTightenSteps = 6;
 constexpr int kSplitLevels = 24;
 constexpr size_t kMaxPoints = 1 << 14;
 // Spacing (cells) of the samples among which a segment that comes too close is split.
@@ -106,6 +108,23 @@ class ClearanceRepair {
     return pulled;
   }
 
+  // Moves each inner point toward the middle of its neighbours as far as (by bisection) both
+  // its segments keep the clearance: takes up the slack the pushes left.
+  void Tighten(std::vector<Point2>& points) const {
+    for (int sweep = 0; sweep < kTightenSweeps; ++sweep) {
+      for (size_t i = 1; i + 1 < points.size(); ++i) {
+        const Point2 from = points[i];
+        const Point2 toward = 0.5 * (points[i - 1] + points[i + 1]);
+        double kept = 0.0, step = 1.0;
+        for (int k = 0; k < kTightenSteps; ++k, step *= 0.5) {
+          const Point2 moved = from + (kept + step) * (toward - from);
+          if (Free(points[i - 1], moved) && Free(moved, points[i + 1])) kept += step;
+        }
+        points[i] = from + kept * (toward - from);
+      }
+    }
+  }
+
  private:
   const OccupancyGrid& grid_;
   const CollisionChecker& exact_;
@@ -133,7 +152,9 @@ std::optional<std::vector<Point2>> RepairToClearance(const OccupancyGrid& grid,
   for (size_t i = 1; i < pushed.size(); ++i) {
     if (!repair.Join(joined.back(), pushed[i], kSplitLevels, joined)) return std::nullopt;
   }
-  return repair.Pull(joined);
+  std::vector<Point2> pulled = repair.Pull(joined);
+  repair.Tighten(pulled);
+  return pulled;
 }
 
 }  // namespace swarmplan
