@@ -149,21 +149,25 @@ absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int 
         absl::StrCat("seed path count must be in [1, ", kMaxSeedPaths, "], got ", count));
   }
   const PlannerInfo info = ExactInfoFor(problem.map->kind());
-  absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, {});
-  if (!params.ok()) return params.status();
-  const std::unique_ptr<Planner> planner = info.factory(*params);
   if (problem.map->is_3d()) count = 1;
 
+  // Rungs from the most room to none: on grids the exact planner's margin over the hard
+  // clearance (the ends need only keep the hard clearance); elsewhere a larger clearance.
   const double hard = problem.clearance;
-  const double preferred = problem.fleet.preferred_clearance;
-  std::vector<double> ladder = {hard};
-  if (!problem.map->is_3d() && preferred > hard)
-    ladder = {preferred, 0.5 * (hard + preferred), hard};
-  for (const double clearance : ladder) {
+  const double room = problem.fleet.preferred_clearance - hard;
+  std::vector<double> rungs = {0.0};
+  if (!problem.map->is_3d() && room > 0) rungs = {room, 0.5 * room, 0.0};
+  const bool grid = problem.map->grid() != nullptr;
+  for (const double extra : rungs) {
+    ParamValues given;
+    if (grid) given["margin"] = extra;
+    absl::StatusOr<ParamSet> params = ParamSet::Resolve(info.params, given);
+    if (!params.ok()) return params.status();
+    const std::unique_ptr<Planner> planner = info.factory(*params);
     Problem keeping = problem;
-    keeping.clearance = clearance;
+    if (!grid) keeping.clearance = hard + extra;
     absl::StatusOr<std::vector<SeedPath>> seeds = SeedPathsKeeping(keeping, *planner, count, stop);
-    if (clearance == hard || (seeds.ok() && !seeds->empty())) return seeds;
+    if (extra == 0.0 || (seeds.ok() && !seeds->empty())) return seeds;
     if (stop.Check(0) != StopReason::kNone) return std::vector<SeedPath>();
   }
   return std::vector<SeedPath>();

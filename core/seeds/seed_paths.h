@@ -30,6 +30,7 @@ struct SeedPath {
 // With a preferred clearance above the hard one (problem.fleet), the seeds are first sought
 // keeping the preferred clearance, then halfway between the two, then the hard clearance: the
 // first that gives a path gives every seed, so a fleet's seeds leave room where the map does.
+// On grids the start and goal need keep only the hard clearance (exact-any-angle's margin).
 absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
                                                     const StopToken& stop);
 

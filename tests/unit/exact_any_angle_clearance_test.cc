@@ -176,5 +176,31 @@ TEST(ExactAnyAngleClearanceTest, ADoorThatFitsWithNoMargin) {
   EXPECT_LE(narrower, PlannedLength(map, "theta-star", low, high, 0.45) * (1 + 1e-9));
 }
 
+// margin: the path keeps the clearance plus the margin but for its first and last segments,
+// which join ends that keep only the clearance.
+TEST(ExactAnyAngleClearanceTest, MarginKeepsMoreButForTheEnds) {
+  std::vector<Cell> wall;
+  for (int x = 0; x < 20; ++x) wall.push_back({x, 4});
+  for (int y = 5; y < 12; ++y) wall.push_back({10, y});
+  const MapPtr map = GridMap(20, 20, wall);
+  const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*map);
+  const Point2 start(3.5, 5.5), goal(16.5, 5.5);  // 0.5 from the wall below
+  absl::StatusOr<PlanResult> plain =
+      ::swarmplan::testing::PlanOnMap("exact-any-angle", map, start, goal, 0.5);
+  absl::StatusOr<PlanResult> roomy =
+      ::swarmplan::testing::PlanOnMap("exact-any-angle", map, start, goal, 0.5, {{"margin", 1.0}});
+  ASSERT_TRUE(plain.ok() && roomy.ok());
+  ASSERT_TRUE(plain->found && roomy->found);
+  const Path& path = roomy->raw_path;
+  ASSERT_GE(path.size(), 4u);
+  EXPECT_EQ(path.front(), Point3(start.x(), start.y(), 0));
+  EXPECT_EQ(path.back(), Point3(goal.x(), goal.y(), 0));
+  EXPECT_TRUE(checker->PathFree(path, 0.5));
+  const Path inner(path.begin() + 1, path.end() - 1);
+  EXPECT_GE(checker->PathClearance(inner), 1.5 - 1e-9);
+  EXPECT_LT(checker->PathClearance(plain->raw_path), 1.0);
+  EXPECT_GT(PathLength(path), PathLength(plain->raw_path));
+}
+
 }  // namespace
 }  // namespace swarmplan

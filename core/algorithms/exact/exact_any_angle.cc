@@ -55,28 +55,29 @@ absl::Status EndPointError(const OccupancyGrid& planning, const CollisionChecker
 }
 
 // Portals: an endpoint that keeps the clearance but lies on or in a cell the planning grid
-// blocks (on the boundary of the region that keeps the clearance, say) joins the search at the
-// nearest usable point within kPortalReach map cells, reached by a segment that keeps the
-// clearance by the map's exact checker. Rings of kPortalDirections points every kPortalStep map
-// cells.
+// blocks (on the boundary of the region that keeps the clearance, or within the margin) joins
+// the search at the nearest usable point within kPortalReach map cells plus the margin, reached
+// by a segment that keeps the clearance by the map's exact checker. Rings of kPortalDirections
+// points every kPortalStep map cells.
 constexpr double kPortalReach = 3.0;
 constexpr double kPortalStep = 0.25;
 constexpr int kPortalDirections = 32;
 
 // The point the search starts (or ends) at for endpoint `local` (planning-grid coordinates):
 // `local` itself when the planning grid can use it, else the portal nearest to it (ties: the
-// one nearer `toward`), else none. `scale`: planning cells per map cell.
+// one nearer `toward`) within `reach` map cells, else none. `scale`: planning cells per map
+// cell. `subdivided`: whether the planning grid is a clearance grid (else no portals).
 std::optional<Point2> SearchPoint(const OccupancyGrid& planning, const CollisionChecker& exact,
                                   const Point2& local, const Point2& toward, double clearance,
-                                  double scale) {
+                                  bool subdivided, double reach, double scale) {
   const GridCollisionChecker usable(planning);
   if (usable.TraversalFree(local, local)) return local;
-  if (clearance <= 0) return std::nullopt;
+  if (!subdivided) return std::nullopt;
   const auto world = [&](const Point2& p) {
     const Point2 w = planning.origin() + p * planning.resolution();
     return Point3(w.x(), w.y(), 0.0);
   };
-  for (double r = kPortalStep; r <= kPortalReach + 1e-9; r += kPortalStep) {
+  for (double r = kPortalStep; r <= reach + 1e-9; r += kPortalStep) {
     std::optional<Point2> best;
     double best_score = 0.0;
     for (int i = 0; i < kPortalDirections; ++i) {
@@ -106,26 +107,32 @@ struct PlanningGridPath {
   // portal as the vertex after (before) them, and between them the search's vertices, moved
   // off the corners they wrap when `offset` is set.
   std::vector<Point2> vertices;
+  bool start_portal = false;  // vertices[1] is the start's portal
+  bool goal_portal = false;   // vertices[size - 2] is the goal's portal
 };
 
+// `margin` (world units): the planning grid keeps the problem's clearance plus the margin; the
+// ends need only keep the clearance, joined to the grid by portals.
 PlanningGridPath SearchPlanningGrid(const AnyAngleGrid& cached, double map_resolution,
                                     const CollisionChecker& exact, const Problem& problem,
-                                    const StopToken& stop, bool offset) {
+                                    double margin, const StopToken& stop, bool offset) {
   PlanningGridPath result;
   const OccupancyGrid& planning = cached.planning_grid();
   const double inv_resolution = 1.0 / planning.resolution();
   const double scale = map_resolution * inv_resolution;
+  const bool subdivided = problem.clearance + margin > 0;
+  const double reach = kPortalReach + margin / map_resolution;
   const Point2 start = (problem.start.head<2>() - planning.origin()) * inv_resolution;
   const Point2 goal = (problem.goal.head<2>() - planning.origin()) * inv_resolution;
   const std::optional<Point2> from =
-      SearchPoint(planning, exact, start, goal, problem.clearance, scale);
+      SearchPoint(planning, exact, start, goal, problem.clearance, subdivided, reach, scale);
   if (!from) {
     result.status =
         EndPointError(planning, exact, start, problem.start, problem.clearance, "start");
     return result;
   }
   const std::optional<Point2> to =
-      SearchPoint(planning, exact, goal, start, problem.clearance, scale);
+      SearchPoint(planning, exact, goal, start, problem.clearance, subdivided, reach, scale);
   if (!to) {
     result.status = EndPointError(planning, exact, goal, problem.goal, problem.clearance, "goal");
     return result;
@@ -149,8 +156,10 @@ PlanningGridPath SearchPlanningGrid(const AnyAngleGrid& cached, double map_resol
   for (const Point2& p : local) {
     result.vertices.push_back(planning.origin() + p * planning.resolution());
   }
-  if (*from != start) result.vertices.insert(result.vertices.begin(), Point2::Zero());
-  if (*to != goal) result.vertices.push_back(Point2::Zero());
+  result.start_portal = *from != start;
+  result.goal_portal = *to != goal;
+  if (result.start_portal) result.vertices.insert(result.vertices.begin(), Point2::Zero());
+  if (result.goal_portal) result.vertices.push_back(Point2::Zero());
   result.vertices.front() = problem.start.head<2>();
   result.vertices.back() = problem.goal.head<2>();
   return result;
@@ -164,7 +173,7 @@ double PolylineLength(const std::vector<Point2>& points) {
 
 class ExactAnyAnglePlanner final : public Planner {
  public:
-  explicit ExactAnyAnglePlanner(ClearanceBound bound) : bound_(bound) {}
+  ExactAnyAnglePlanner(ClearanceBound bound, double margin) : bound_(bound), margin_(margin) {}
 
   absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
                                      Observer& observer) override {
@@ -182,14 +191,15 @@ class ExactAnyAnglePlanner final : public Planner {
     }
     const absl::Time started = absl::Now();
     const std::unique_ptr<const CollisionChecker> exact = MakeCollisionChecker(*problem.map);
+    const double kept = problem.clearance + margin_;
     const auto search = [&](ClearanceBound bound) {
-      return SearchPlanningGrid(*AnyAngleGridFor(*problem.map, problem.clearance, bound),
-                                grid->resolution(), *exact, problem, stop,
+      return SearchPlanningGrid(*AnyAngleGridFor(*problem.map, kept, bound), grid->resolution(),
+                                *exact, problem, margin_, stop,
                                 /*offset=*/bound == ClearanceBound::kUpper);
     };
     PlanningGridPath best = search(bound_);
     if (best.stopped) return StoppedExactSearch(stop.Check(0));
-    const bool repair = problem.clearance > 0 && bound_ == ClearanceBound::kUpper;
+    const bool repair = kept > 0 && bound_ == ClearanceBound::kUpper;
     if (!best.status.ok() && !repair) return best.status;
     int64_t expanded = best.expanded;
     if (repair) {
@@ -201,8 +211,7 @@ class ExactAnyAnglePlanner final : public Planner {
       expanded += lower.expanded;
       if (!best.status.ok() && !lower.found) return best.status;
       std::optional<std::vector<Point2>> repaired;
-      if (lower.found)
-        repaired = RepairToClearance(*grid, *exact, lower.vertices, problem.clearance);
+      if (lower.found) repaired = RepairKeeping(*grid, *exact, lower, kept);
       if (repaired && (!best.found || !best.status.ok() ||
                        PolylineLength(*repaired) < PolylineLength(best.vertices))) {
         best.status = absl::OkStatus();
@@ -219,7 +228,25 @@ class ExactAnyAnglePlanner final : public Planner {
   }
 
  private:
+  // The lower bound's path between its portals made to keep `kept`; the segments to the ends
+  // keep the problem's clearance already (SearchPoint).
+  static std::optional<std::vector<Point2>> RepairKeeping(const OccupancyGrid& grid,
+                                                          const CollisionChecker& exact,
+                                                          const PlanningGridPath& lower,
+                                                          double kept) {
+    const std::vector<Point2>& all = lower.vertices;
+    const auto first = all.begin() + (lower.start_portal ? 1 : 0);
+    const auto last = all.end() - (lower.goal_portal ? 1 : 0);
+    std::optional<std::vector<Point2>> inner =
+        RepairToClearance(grid, exact, std::vector<Point2>(first, last), kept);
+    if (!inner) return std::nullopt;
+    if (lower.start_portal) inner->insert(inner->begin(), all.front());
+    if (lower.goal_portal) inner->push_back(all.back());
+    return inner;
+  }
+
   ClearanceBound bound_;
+  double margin_;
 };
 
 }  // namespace
@@ -256,9 +283,15 @@ PlannerInfo ExactAnyAngleInfo() {
       "with a clearance: upper plans on the sub-cells that keep it (the path keeps the "
       "clearance); lower on those not wholly within it of a blocked cell, a length no path that "
       "keeps the clearance beats (the path may come closer: a yardstick, not a plan)")};
+  info.params.push_back(
+      ParamSpec::Double("margin", 0.0, 0.0, std::nullopt, "map units",
+                        "plan keeping the clearance plus this margin; the start and goal need "
+                        "keep only the clearance, joined to the path by a straight segment")
+          .Ours());
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     return std::make_unique<ExactAnyAnglePlanner>(
-        params.Enum("bound") == "lower" ? ClearanceBound::kLower : ClearanceBound::kUpper);
+        params.Enum("bound") == "lower" ? ClearanceBound::kLower : ClearanceBound::kUpper,
+        params.Double("margin"));
   };
   return info;
 }
