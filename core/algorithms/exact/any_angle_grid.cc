@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "absl/strings/str_format.h"
-#include "core/geometry/distance_transform.h"
 
 namespace swarmplan {
 
@@ -27,20 +26,13 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
   // point of it then lies closer than `reach`: distance is 1-Lipschitz).
   const double reach = clearance / grid.resolution() * s;
   const double lower_reach = reach - std::numbers::sqrt2 / 2;
-  // Per cell, from D, the distance between its centre and the nearest blocked cell's: every
-  // point of the cell lies at least D - sqrt(2) and at most D + sqrt(2) / 2 from the nearest
-  // blocked square. Only cells between the two need their sub-cells measured, against the
-  // blocked squares within `window` cells (those that can come closer than the clearance).
+  // Per cell, from D, the distance between its centre and the nearest blocked cell's (the
+  // grid's own distance field): every point of the cell lies at least D - sqrt(2) and at most
+  // D + sqrt(2) / 2 from the nearest blocked square. Only cells between the two need their
+  // sub-cells measured, against the blocked squares within `window` cells (those that can come
+  // closer than the clearance).
   const double reach_cells = clearance / grid.resolution();
   const int window = static_cast<int>(std::ceil(reach_cells)) + 1;
-  std::vector<uint8_t> mask(static_cast<size_t>(grid.width()) * grid.height());
-  for (int y = 0; y < grid.height(); ++y) {
-    for (int x = 0; x < grid.width(); ++x) {
-      mask[static_cast<size_t>(y) * grid.width() + x] = grid.IsBlocked(x, y) ? 1 : 0;
-    }
-  }
-  const std::vector<double> centre_squared =
-      SquaredDistanceTransform(grid.width(), grid.height(), mask);
   const auto fill = [&](int x, int y) {
     for (int j = 0; j < s; ++j) {
       std::fill_n(cells.begin() + (static_cast<size_t>(y * s + j) * w + x * s), s,
@@ -50,7 +42,7 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
   std::vector<Cell> near;
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
-      const double d = std::sqrt(centre_squared[static_cast<size_t>(y) * grid.width() + x]);
+      const double d = grid.DistanceToObstacle(x, y) / grid.resolution();
       if (d == 0.0 || d + std::numbers::sqrt2 * (0.5 + 0.5 / s) < reach_cells) {
         fill(x, y);
         continue;
