@@ -19,11 +19,16 @@ void Objective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
   }
 }
 
-void PlaceInitialGuesses(const Objective& objective, std::vector<Eigen::VectorXd>& population) {
+void PlaceInitialGuesses(const Objective& objective, Rng& rng,
+                         std::vector<Eigen::VectorXd>& population) {
   const std::vector<Eigen::VectorXd> guesses = objective.InitialGuesses();
   const size_t count = std::min(guesses.size(), population.size());
   for (size_t i = 0; i < count; ++i) {
     population[i] = guesses[i].cwiseMax(objective.lower()).cwiseMin(objective.upper());
+  }
+  Eigen::VectorXd drawn;
+  for (size_t i = count; i < population.size(); ++i) {
+    if (objective.SampleNearGuesses(rng, drawn)) population[i] = drawn;
   }
 }
 

@@ -40,6 +40,9 @@ class Objective {
   // members (PlaceInitialGuesses): a seeded objective's seeds. None by default, which leaves
   // the paper's initialisation alone.
   virtual std::vector<Eigen::VectorXd> InitialGuesses() const { return {}; }
+  // A decision vector for a member of the initial population after the guesses, drawn near
+  // them by a seeded objective; false (the default) keeps the optimiser's own draw.
+  virtual bool SampleNearGuesses(Rng& /*rng*/, Eigen::VectorXd& /*x*/) const { return false; }
 
   void Clamp(Eigen::VectorXd& x) const { x = x.cwiseMax(lower()).cwiseMin(upper()); }
 };
@@ -66,7 +69,8 @@ class PathObjective : public Objective {
 };
 
 // Overwrites the first members of `population` with the objective's initial guesses (as many
-// as fit), clamped to the box.
-void PlaceInitialGuesses(const Objective& objective, std::vector<Eigen::VectorXd>& population);
+// as fit), clamped to the box, and the rest with its draws near them where it makes some.
+void PlaceInitialGuesses(const Objective& objective, Rng& rng,
+                         std::vector<Eigen::VectorXd>& population);
 
 }  // namespace swarmplan

@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "core/geometry/collision.h"
+#include "core/random.h"
 #include "core/smoothing/bounded_curvature.h"
 
 namespace swarmplan {
@@ -166,7 +167,8 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   }
 
   // The best seed by the same fitness, read as the polyline it is.
-  const std::vector<Eigen::VectorXd> guesses = objective->InitialGuesses();
+  objective->guesses_ = objective->InitialGuesses();
+  const std::vector<Eigen::VectorXd>& guesses = objective->guesses_;
   Eigen::VectorXd waypoints(2 * k);
   for (size_t j = 0; j < seeds.size(); ++j) {
     WaypointFitnessOptions polyline = seed_options[j];
@@ -270,20 +272,32 @@ std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
     guesses.push_back(std::move(x));
   }
   // Each seed again with every control point moved toward the middle of its section, by at most
-  // `away_`: off the walls the seed grazes, where a spline through it has room to turn.
-  for (size_t j = 0; j < corridors_.size(); ++j) {
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
-    x[0] = static_cast<double>(j) + 0.5;
-    for (int i = 0; i < k_; ++i) {
-      const CorridorSection& s = corridors_[j][i].section;
-      const double move = std::clamp(0.5 * (s.left - s.right), -away_, away_);
-      if (move > 0 && s.left > 0) x[1 + k_ + i] = move / s.left;
-      if (move < 0 && s.right > 0) x[1 + k_ + i] = move / s.right;
+  // `away_` and by fractions of it: off the walls the seed grazes, where a spline through it has
+  // room to turn.
+  for (const double away : {away_, away_ / 4, away_ / 16}) {
+    for (size_t j = 0; j < corridors_.size(); ++j) {
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
+      x[0] = static_cast<double>(j) + 0.5;
+      for (int i = 0; i < k_; ++i) {
+        const CorridorSection& s = corridors_[j][i].section;
+        const double move = std::clamp(0.5 * (s.left - s.right), -away, away);
+        if (move > 0 && s.left > 0) x[1 + k_ + i] = move / s.left;
+        if (move < 0 && s.right > 0) x[1 + k_ + i] = move / s.right;
+      }
+      guesses.push_back(std::move(x));
     }
-    guesses.push_back(std::move(x));
   }
   guesses.insert(guesses.end(), smoothed_guesses_.begin(), smoothed_guesses_.end());
   return guesses;
+}
+
+bool SeededWaypointObjective::SampleNearGuesses(Rng& rng, Eigen::VectorXd& x) const {
+  constexpr double kSmallestScaleLog2 = -8.0;
+  x = guesses_[rng.UniformInt(0, static_cast<int64_t>(guesses_.size()) - 1)];
+  const double scale = std::exp2(rng.Uniform(kSmallestScaleLog2, 0.0));
+  for (int j = 1; j < dim(); ++j) x[j] += scale * rng.Uniform(-1.0, 1.0);
+  Clamp(x);
+  return true;
 }
 
 }  // namespace swarmplan

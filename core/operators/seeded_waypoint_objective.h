@@ -42,10 +42,15 @@ class SeededWaypointObjective final : public PathObjective {
   Path Decode(const Eigen::VectorXd& x) override;
   // The seeds themselves (selector at the middle of each seed's interval, every offset 0), then
   // each seed with its control points moved toward the middle of their corridor sections by at
-  // most max(preferred clearance, a field cell), then, with a turning radius, each seed after
-  // the bounded-curvature smoothing (its control points moved across to where the smoothed
-  // path crosses their sections).
+  // most a = max(preferred clearance, a field cell), a / 4 and a / 16 (a seed that grazes the
+  // walls at the hard clearance has no feasible neighbour along most directions; these do), then,
+  // with a turning radius, each seed after the bounded-curvature smoothing (its control points
+  // moved across to where the smoothed path crosses their sections).
   std::vector<Eigen::VectorXd> InitialGuesses() const override;
+  // One of the initial guesses with each offset moved by up to a scale drawn log-uniformly from
+  // 1/256 to 1 of its range: the rest of the population spread around the seeds, most of it in
+  // the feasible neighbourhood of a seed that grazes the walls.
+  bool SampleNearGuesses(Rng& rng, Eigen::VectorXd& x) const override;
   std::optional<KnownPath> BestKnownPath() override { return seed_paths_[best_seed_]; }
   int Corridors() const override { return static_cast<int>(corridors_.size()); }
   int CorridorOf(const Eigen::VectorXd& x) const override;
@@ -80,6 +85,7 @@ class SeededWaypointObjective final : public PathObjective {
   int best_seed_ = 0;
   double away_ = 0.0;  // the largest move of the second guess of each seed
   std::vector<Eigen::VectorXd> smoothed_guesses_;
+  std::vector<Eigen::VectorXd> guesses_;  // InitialGuesses, once the objective is built
   Eigen::VectorXd lower_, upper_;
   Eigen::VectorXd single_;  // engine input, 2k
 };

@@ -17,18 +17,6 @@
 namespace swarmplan {
 namespace {
 
-// The largest curvature of the circle through each three consecutive points.
-double LargestMengerCurvature(const Path& path) {
-  double largest = 0.0;
-  for (size_t i = 1; i + 1 < path.size(); ++i) {
-    const Point2 a = path[i - 1].head<2>(), b = path[i].head<2>(), c = path[i + 1].head<2>();
-    const double twice_area = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-    const double product = (b - a).norm() * (c - b).norm() * (c - a).norm();
-    if (product > 0) largest = std::max(largest, 2.0 * twice_area / product);
-  }
-  return largest;
-}
-
 MapPtr EmptyWorld() {
   return std::make_shared<const Map>(Map::Data(*ShapeWorld::Create({{0, 0}, {40, 30}}, {}, {})));
 }
@@ -40,7 +28,7 @@ void ExpectSmoothedPath(const Map& map, const Path& raw, const BoundedCurvatureR
   EXPECT_EQ(r.path.back(), raw.back());
   EXPECT_TRUE(r.collision_free);
   EXPECT_GE(seed_testing::Clearance(map, r.path), clearance - 1e-9);
-  EXPECT_LE(LargestMengerCurvature(r.path), 1.0 / radius);
+  EXPECT_LE(contract::LargestMengerCurvature(r.path), 1.0 / radius);
   EXPECT_EQ(r.corners_over, 0);
 }
 
@@ -82,7 +70,7 @@ TEST(BoundedCurvatureTest, ReducesADenselySampledCurveToItsFewCorners) {
   spline.Fit({{2, 2, 0}, {12, 20, 0}, {22, 4, 0}, {36, 26, 0}}, SplineEnd::kNotAKnot);
   Path raw;
   spline.SampleBySpacing(0.1, raw);
-  ASSERT_GT(LargestMengerCurvature(raw), 0.5);
+  ASSERT_GT(contract::LargestMengerCurvature(raw), 0.5);
   BoundedCurvatureOptions options;
   options.turning_radius = 2.0;
   const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
@@ -99,7 +87,7 @@ TEST(BoundedCurvatureTest, KeepsAPathThatAlreadyTurnsWideEnough) {
     const double a = 0.05 * i;
     raw.emplace_back(20 + 5 * std::cos(a), 10 + 5 * std::sin(a), 0);
   }
-  ASSERT_LT(LargestMengerCurvature(raw), 0.5);
+  ASSERT_LT(contract::LargestMengerCurvature(raw), 0.5);
   BoundedCurvatureOptions options;
   options.turning_radius = 2.0;
   const BoundedCurvatureResult kept = SmoothToTurningRadius(raw, options, *checker);
@@ -144,7 +132,7 @@ TEST(BoundedCurvatureTest, IsTheSmoothingMethodThatTakesTheTurningRadius) {
   ASSERT_TRUE(smoothed.ok()) << smoothed.status();
   EXPECT_TRUE(smoothed->collision_free);
   EXPECT_GE(seed_testing::Clearance(*map, smoothed->path), 0.5 - 1e-9);
-  EXPECT_LE(LargestMengerCurvature(smoothed->path), 0.5);
+  EXPECT_LE(contract::LargestMengerCurvature(smoothed->path), 0.5);
   EXPECT_LE(EvaluatePath(*map, smoothed->path, 0.5).max_curvature, 0.5);
 }
 

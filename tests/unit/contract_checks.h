@@ -80,6 +80,18 @@ inline double SegmentBoxDistance(const Point2& a, const Point2& b, const Point2&
   return SegmentPolygonDistance(a, b, box);
 }
 
+// The largest curvature of the circle through each three consecutive points of the path.
+inline double LargestMengerCurvature(const Path& path) {
+  double largest = 0.0;
+  for (size_t i = 1; i + 1 < path.size(); ++i) {
+    const Point2 a = path[i - 1].head<2>(), b = path[i].head<2>(), c = path[i + 1].head<2>();
+    const double twice_area = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    const double product = (b - a).norm() * (c - b).norm() * (c - a).norm();
+    if (product > 0) largest = std::max(largest, 2.0 * twice_area / product);
+  }
+  return largest;
+}
+
 // The smallest distance from the path to a blocked cell square of the grid; -1 when a point
 // leaves the grid.
 inline double GridPathClearance(const OccupancyGrid& grid, const Path& path) {

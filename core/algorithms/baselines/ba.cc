@@ -20,7 +20,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < dim; ++j) x[i][j] = rng.Uniform(objective.lower()[j], objective.upper()[j]);
   }
-  PlaceInitialGuesses(objective, x);
+  PlaceInitialGuesses(objective, rng, x);
   for (int i = 0; i < n; ++i) {
     const Evaluation e = objective.Evaluate(x[i]);
     f[i] = e.fitness;

@@ -25,7 +25,7 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
       for (int j = 0; j < dim; ++j) xi[j] = rng.Uniform(objective.lower()[j], objective.upper()[j]);
     }
   }
-  PlaceInitialGuesses(objective, x);
+  PlaceInitialGuesses(objective, rng, x);
   std::vector<Eigen::VectorXd> v(n, Eigen::VectorXd::Zero(dim));
   std::vector<Eigen::VectorXd> pbest = x;
   std::vector<double> f(n), f_pbest(n);
