@@ -25,19 +25,31 @@ std::string JoinMapKinds(const std::vector<MapKind>& kinds);
 class Map {
  public:
   using Data = std::variant<OccupancyGrid, ShapeWorld, Terrain>;
+  // How a grid map was made from another: `base` with the `blocked` cells blocked too (the seed
+  // search's corridor walls). Structures derived from such a map may be derived from the base's
+  // (AnyAngleGridFor) instead of from scratch.
+  struct GridPatch {
+    std::shared_ptr<const Map> base;
+    std::vector<Cell> blocked;
+  };
 
   explicit Map(Data data) : data_(std::move(data)) {}
+  // `data` must be the grid of `patch.base` with `patch.blocked` blocked.
+  Map(Data data, GridPatch patch)
+      : data_(std::move(data)), patch_(std::make_shared<const GridPatch>(std::move(patch))) {}
   // Copies and moves start with an empty derived cache: cached structures may refer into the
   // data of the map they were built from.
-  Map(const Map& other) : data_(other.data_) {}
-  Map(Map&& other) noexcept : data_(std::move(other.data_)) {}
+  Map(const Map& other) : data_(other.data_), patch_(other.patch_) {}
+  Map(Map&& other) noexcept : data_(std::move(other.data_)), patch_(std::move(other.patch_)) {}
   Map& operator=(const Map& other) {
     data_ = other.data_;
+    patch_ = other.patch_;
     cache_ = std::make_unique<DerivedCache>();
     return *this;
   }
   Map& operator=(Map&& other) noexcept {
     data_ = std::move(other.data_);
+    patch_ = std::move(other.patch_);
     cache_ = std::make_unique<DerivedCache>();
     return *this;
   }
@@ -62,9 +74,12 @@ class Map {
     return std::static_pointer_cast<const T>(value);
   }
   const DerivedCache& derived_cache() const { return *cache_; }
+  // The map this one was made from by blocking more cells; nullptr for a map of its own.
+  const GridPatch* patch() const { return patch_.get(); }
 
  private:
   Data data_;
+  std::shared_ptr<const GridPatch> patch_;
   std::unique_ptr<DerivedCache> cache_ = std::make_unique<DerivedCache>();
 };
 

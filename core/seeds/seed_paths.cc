@@ -47,27 +47,36 @@ double WallOverlap(const Map& map, double clearance) {
   return clearance + 1e-3 * Diagonal(map);
 }
 
-void BlockSegment(const OccupancyGrid& grid, const Wall& wall, std::vector<int8_t>& cells) {
+// Blocks the free cells along the wall, adding them to `blocked`.
+void BlockSegment(const OccupancyGrid& grid, const Wall& wall, std::vector<int8_t>& cells,
+                  std::vector<Cell>& blocked) {
   const double step = 0.25 * grid.resolution();
   const int n = 1 + static_cast<int>(std::ceil((wall.b - wall.a).norm() / step));
   for (int i = 0; i <= n; ++i) {
     const Cell c = grid.CellAt(wall.a + (wall.b - wall.a) * (static_cast<double>(i) / n));
-    if (grid.InBounds(c)) cells[static_cast<size_t>(c.y) * grid.width() + c.x] = 100;
+    if (!grid.InBounds(c) || grid.IsBlocked(c.x, c.y)) continue;
+    int8_t& cell = cells[static_cast<size_t>(c.y) * grid.width() + c.x];
+    if (cell == OccupancyGrid::kOccupied) continue;
+    cell = OccupancyGrid::kOccupied;
+    blocked.push_back(c);
   }
 }
 
-// `original` with every wall added as an obstacle.
-absl::StatusOr<MapPtr> WithWalls(const Map& original, const std::vector<Wall>& walls) {
-  if (const OccupancyGrid* grid = original.grid()) {
+// `original` with every wall added as an obstacle; on grids a patch of `original`, so that the
+// exact planner's clearance grids are measured again only along the walls.
+absl::StatusOr<MapPtr> WithWalls(const MapPtr& original, const std::vector<Wall>& walls) {
+  if (const OccupancyGrid* grid = original->grid()) {
     std::vector<int8_t> cells = grid->cells();
-    for (const Wall& wall : walls) BlockSegment(*grid, wall, cells);
+    std::vector<Cell> blocked;
+    for (const Wall& wall : walls) BlockSegment(*grid, wall, cells, blocked);
     absl::StatusOr<OccupancyGrid> cut = OccupancyGrid::Create(
         grid->width(), grid->height(), std::move(cells), grid->resolution(), grid->origin());
     if (!cut.ok()) return cut.status();
-    return std::make_shared<const Map>(Map::Data(*std::move(cut)));
+    return std::make_shared<const Map>(Map::Data(*std::move(cut)),
+                                       Map::GridPatch{original, std::move(blocked)});
   }
-  const ShapeWorld& world = *original.world();
-  const double half_thickness = 1e-4 * Diagonal(original);
+  const ShapeWorld& world = *original->world();
+  const double half_thickness = 1e-4 * Diagonal(*original);
   std::vector<Polygon> polygons = world.polygons();
   for (const Wall& wall : walls) {
     const Point2 along = (wall.b - wall.a).normalized();
@@ -122,7 +131,7 @@ absl::StatusOr<std::vector<SeedPath>> SeedPathsKeeping(const Problem& problem, P
     for (const double fraction : {0.5, 1.0 / 3.0, 2.0 / 3.0}) {
       std::vector<Wall> more = walls;
       more.push_back(WallAcross(*checker, *cut.map, found->path, fraction, problem.clearance));
-      absl::StatusOr<MapPtr> map = WithWalls(*problem.map, more);
+      absl::StatusOr<MapPtr> map = WithWalls(problem.map, more);
       if (!map.ok()) return map.status();
       const std::unique_ptr<const CollisionChecker> cut_checker = MakeCollisionChecker(**map);
       if (!cut_checker->PointFree(problem.start, problem.clearance) ||

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -200,6 +201,71 @@ TEST(ExactAnyAngleClearanceTest, MarginKeepsMoreButForTheEnds) {
   EXPECT_GE(checker->PathClearance(inner), 1.5 - 1e-9);
   EXPECT_LT(checker->PathClearance(plain->raw_path), 1.0);
   EXPECT_GT(PathLength(path), PathLength(plain->raw_path));
+}
+
+// A grid made from another by blocking more cells (the seeds' corridor walls) gets the clearance
+// grid of a rebuild from the other's, measured again only near the new cells.
+TEST(ExactAnyAngleClearanceTest, ClearanceGridBlockingMatchesARebuild) {
+  std::mt19937_64 rng(13);
+  for (const auto& [width, height] : {std::pair{31, 23}, std::pair{600, 450}}) {
+    std::bernoulli_distribution blocked(0.08);
+    std::vector<int8_t> cells(static_cast<size_t>(width) * height, OccupancyGrid::kFree);
+    for (int8_t& c : cells) c = blocked(rng) ? OccupancyGrid::kOccupied : OccupancyGrid::kFree;
+    const OccupancyGrid base = *OccupancyGrid::Create(width, height, cells);
+    std::uniform_int_distribution<int> x_of(0, width - 1), y_of(0, height - 1);
+    std::vector<Cell> added = {{0, 0}, {width - 1, height - 1}, {0, height / 2}};
+    for (int i = 0; i < 40; ++i) added.push_back({x_of(rng), y_of(rng)});
+    for (const Cell& c : added) cells[static_cast<size_t>(c.y) * width + c.x] = 100;
+    const OccupancyGrid cut = *OccupancyGrid::Create(width, height, cells);
+    for (const double clearance : {0.3, 0.5, 1.0, 2.25}) {
+      for (const ClearanceBound bound : {ClearanceBound::kUpper, ClearanceBound::kLower}) {
+        SCOPED_TRACE(::testing::Message()
+                     << width << " x " << height << " clearance " << clearance
+                     << (bound == ClearanceBound::kUpper ? " upper" : " lower"));
+        const OccupancyGrid patched = ClearanceGridBlocking(ClearanceGrid(base, clearance, bound),
+                                                            cut, added, clearance, bound);
+        const OccupancyGrid rebuilt = ClearanceGrid(cut, clearance, bound);
+        ASSERT_EQ(patched.width(), rebuilt.width());
+        ASSERT_EQ(patched.height(), rebuilt.height());
+        EXPECT_EQ(patched.cells(), rebuilt.cells());
+        EXPECT_NE(patched.cells(), ClearanceGrid(base, clearance, bound).cells());
+      }
+    }
+  }
+}
+
+// exact-any-angle plans on a map patched from another exactly as on the same grid built anew.
+TEST(ExactAnyAngleClearanceTest, APatchedMapPlansAsItsRebuild) {
+  std::mt19937_64 rng(17);
+  std::bernoulli_distribution blocked(0.1);
+  std::vector<Cell> cells;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      if (blocked(rng) && (x > 2 || y > 2) && (x < 37 || y < 37)) cells.push_back({x, y});
+    }
+  }
+  const MapPtr base = GridMap(40, 40, cells);
+  std::vector<Cell> wall;
+  for (int i = 5; i < 35; ++i) wall.push_back({i, 40 - i});
+  std::vector<Cell> all = cells;
+  all.insert(all.end(), wall.begin(), wall.end());
+  const MapPtr rebuilt = GridMap(40, 40, all);
+  const MapPtr patched =
+      std::make_shared<const Map>(Map::Data(*rebuilt->grid()), Map::GridPatch{base, wall});
+  // The base's clearance grids first, as the seed search builds them.
+  ASSERT_TRUE(
+      ::swarmplan::testing::PlanOnMap("exact-any-angle", base, {1.5, 1.5}, {38.5, 38.5}, 0.5).ok());
+  for (const double margin : {0.0, 1.0}) {
+    SCOPED_TRACE(margin);
+    const ParamValues params = {{"margin", margin}};
+    absl::StatusOr<PlanResult> on_patched = ::swarmplan::testing::PlanOnMap(
+        "exact-any-angle", patched, {1.5, 1.5}, {38.5, 38.5}, 0.5, params);
+    absl::StatusOr<PlanResult> on_rebuilt = ::swarmplan::testing::PlanOnMap(
+        "exact-any-angle", rebuilt, {1.5, 1.5}, {38.5, 38.5}, 0.5, params);
+    ASSERT_TRUE(on_patched.ok() && on_rebuilt.ok());
+    ASSERT_EQ(on_patched->found, on_rebuilt->found);
+    EXPECT_EQ(on_patched->raw_path, on_rebuilt->raw_path);
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "absl/strings/str_format.h"
@@ -17,22 +18,63 @@ int ClearanceSubdivision(const OccupancyGrid& grid) {
   return 1;
 }
 
+namespace {
+
+// The clearance of ClearanceGrid in sub-cells, and whether a sub-cell lies near a blocked map
+// cell by the bound's test: kUpper blocks a sub-cell whose square comes closer than `reach` to
+// the blocked square; kLower one whose centre lies closer than `reach` less half a sub-cell
+// diagonal (every point of it then lies closer than `reach`: distance is 1-Lipschitz).
+struct SubCellReach {
+  SubCellReach(const OccupancyGrid& grid, double clearance, ClearanceBound bound)
+      : s(ClearanceSubdivision(grid)),
+        reach(clearance / grid.resolution() * s),
+        lower_reach(reach - std::numbers::sqrt2 / 2),
+        window(static_cast<int>(std::ceil(clearance / grid.resolution())) + 1),
+        bound(bound) {}
+
+  // Sub-cell (sx, sy) against the blocked map cell whose lowest sub-cell is `c`.
+  bool Near(int sx, int sy, const Cell& c) const {
+    if (bound == ClearanceBound::kUpper) {
+      const double gx = std::max({0, c.x - (sx + 1), sx - (c.x + s)});
+      const double gy = std::max({0, c.y - (sy + 1), sy - (c.y + s)});
+      return gx * gx + gy * gy < reach * reach;
+    }
+    const double gx = std::max({0.0, c.x - (sx + 0.5), (sx + 0.5) - (c.x + s)});
+    const double gy = std::max({0.0, c.y - (sy + 0.5), (sy + 0.5) - (c.y + s)});
+    return lower_reach > 0 && gx * gx + gy * gy < lower_reach * lower_reach;
+  }
+
+  int s;
+  double reach;
+  double lower_reach;
+  int window;  // map cells around a blocked cell whose sub-cells may lie near it
+  ClearanceBound bound;
+};
+
+OccupancyGrid SubdividedGrid(const OccupancyGrid& grid, int s, std::vector<int8_t> cells) {
+  MapLimits limits;
+  limits.max_cells = std::max<int64_t>(limits.max_cells, static_cast<int64_t>(cells.size()));
+  absl::StatusOr<OccupancyGrid> subdivided =
+      OccupancyGrid::Create(grid.width() * s, grid.height() * s, std::move(cells),
+                            grid.resolution() / s, grid.origin(), limits);
+  // The map's extent split into more cells of the same total size: Create cannot fail.
+  return *std::move(subdivided);
+}
+
+}  // namespace
+
 OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, ClearanceBound bound) {
-  const int s = ClearanceSubdivision(grid);
+  const SubCellReach near_by(grid, clearance, bound);
+  const int s = near_by.s;
   const int w = grid.width() * s, h = grid.height() * s;
   std::vector<int8_t> cells(static_cast<size_t>(w) * h, OccupancyGrid::kFree);
-  // In sub-cells. kUpper blocks a sub-cell whose square comes closer than `reach` to a blocked
-  // square; kLower one whose centre lies closer than `reach` less half a sub-cell diagonal (every
-  // point of it then lies closer than `reach`: distance is 1-Lipschitz).
-  const double reach = clearance / grid.resolution() * s;
-  const double lower_reach = reach - std::numbers::sqrt2 / 2;
   // Per cell, from D, the distance between its centre and the nearest blocked cell's (the
   // grid's own distance field): every point of the cell lies at least D - sqrt(2) and at most
   // D + sqrt(2) / 2 from the nearest blocked square. Only cells between the two need their
   // sub-cells measured, against the blocked squares within `window` cells (those that can come
   // closer than the clearance).
   const double reach_cells = clearance / grid.resolution();
-  const int window = static_cast<int>(std::ceil(reach_cells)) + 1;
+  const int window = near_by.window;
   const auto fill = [&](int x, int y) {
     for (int j = 0; j < s; ++j) {
       std::fill_n(cells.begin() + (static_cast<size_t>(y * s + j) * w + x * s), s,
@@ -58,46 +100,82 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
       for (int j = 0; j < s; ++j) {
         for (int i = 0; i < s; ++i) {
           const int sx = x * s + i, sy = y * s + j;
-          bool blocked = false;
           for (const Cell& c : near) {
-            if (bound == ClearanceBound::kUpper) {
-              const double gx = std::max({0, c.x - (sx + 1), sx - (c.x + s)});
-              const double gy = std::max({0, c.y - (sy + 1), sy - (c.y + s)});
-              blocked = gx * gx + gy * gy < reach * reach;
-            } else {
-              const double gx = std::max({0.0, c.x - (sx + 0.5), (sx + 0.5) - (c.x + s)});
-              const double gy = std::max({0.0, c.y - (sy + 0.5), (sy + 0.5) - (c.y + s)});
-              blocked = lower_reach > 0 && gx * gx + gy * gy < lower_reach * lower_reach;
+            if (near_by.Near(sx, sy, c)) {
+              cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
+              break;
             }
-            if (blocked) break;
           }
-          if (blocked) cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
         }
       }
     }
   }
-  MapLimits limits;
-  limits.max_cells = std::max<int64_t>(limits.max_cells, static_cast<int64_t>(cells.size()));
-  absl::StatusOr<OccupancyGrid> subdivided =
-      OccupancyGrid::Create(w, h, std::move(cells), grid.resolution() / s, grid.origin(), limits);
-  // The map's extent split into more cells of the same total size: Create cannot fail.
-  return *std::move(subdivided);
+  return SubdividedGrid(grid, s, std::move(cells));
+}
+
+OccupancyGrid ClearanceGridBlocking(const OccupancyGrid& base, const OccupancyGrid& grid,
+                                    const std::vector<Cell>& blocked, double clearance,
+                                    ClearanceBound bound) {
+  const SubCellReach near_by(grid, clearance, bound);
+  const int s = near_by.s;
+  const int w = grid.width() * s, h = grid.height() * s;
+  std::vector<int8_t> cells = base.cells();
+  // A sub-cell is blocked when it lies near any blocked cell: the base's blocked sub-cells stay,
+  // and those near a newly blocked cell join them.
+  for (const Cell& b : blocked) {
+    if (!grid.InBounds(b)) continue;
+    const Cell lowest{b.x * s, b.y * s};
+    const int x0 = std::max(0, (b.x - near_by.window) * s);
+    const int x1 = std::min(w - 1, (b.x + near_by.window + 1) * s - 1);
+    const int y0 = std::max(0, (b.y - near_by.window) * s);
+    const int y1 = std::min(h - 1, (b.y + near_by.window + 1) * s - 1);
+    for (int sy = y0; sy <= y1; ++sy) {
+      for (int sx = x0; sx <= x1; ++sx) {
+        const bool inside = sx / s == b.x && sy / s == b.y;
+        if (inside || near_by.Near(sx, sy, lowest)) {
+          cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
+        }
+      }
+    }
+  }
+  return SubdividedGrid(grid, s, std::move(cells));
 }
 
 AnyAngleGrid AnyAngleGrid::Build(const OccupancyGrid& grid, double clearance,
                                  ClearanceBound bound) {
-  AnyAngleGrid result;
   if (clearance > 0) {
-    result.subdivided_ =
-        std::make_shared<const OccupancyGrid>(ClearanceGrid(grid, clearance, bound));
-    result.planning_ = result.subdivided_.get();
-  } else {
-    result.planning_ = &grid;
+    return OnPlanningGrid(
+        std::make_shared<const OccupancyGrid>(ClearanceGrid(grid, clearance, bound)));
   }
-  const OccupancyGrid& planning = *result.planning_;
-  result.row_start_.reserve(planning.height() + 1);
+  AnyAngleGrid result;
+  result.planning_ = &grid;
+  result.FindRuns();
+  return result;
+}
+
+AnyAngleGrid AnyAngleGrid::BuildBlocking(const AnyAngleGrid& base, const OccupancyGrid& grid,
+                                         const std::vector<Cell>& blocked, double clearance,
+                                         ClearanceBound bound) {
+  if (clearance > 0) {
+    return OnPlanningGrid(std::make_shared<const OccupancyGrid>(
+        ClearanceGridBlocking(base.planning_grid(), grid, blocked, clearance, bound)));
+  }
+  return Build(grid, clearance, bound);
+}
+
+AnyAngleGrid AnyAngleGrid::OnPlanningGrid(std::shared_ptr<const OccupancyGrid> subdivided) {
+  AnyAngleGrid result;
+  result.subdivided_ = std::move(subdivided);
+  result.planning_ = result.subdivided_.get();
+  result.FindRuns();
+  return result;
+}
+
+void AnyAngleGrid::FindRuns() {
+  const OccupancyGrid& planning = *planning_;
+  row_start_.reserve(planning.height() + 1);
   for (int y = 0; y < planning.height(); ++y) {
-    result.row_start_.push_back(static_cast<int>(result.runs_.size()));
+    row_start_.push_back(static_cast<int>(runs_.size()));
     int x = 0;
     while (x < planning.width()) {
       if (planning.IsBlocked(x, y)) {
@@ -106,11 +184,10 @@ AnyAngleGrid AnyAngleGrid::Build(const OccupancyGrid& grid, double clearance,
       }
       const int begin = x;
       while (x < planning.width() && !planning.IsBlocked(x, y)) ++x;
-      result.runs_.push_back(Run{begin, x});
+      runs_.push_back(Run{begin, x});
     }
   }
-  result.row_start_.push_back(static_cast<int>(result.runs_.size()));
-  return result;
+  row_start_.push_back(static_cast<int>(runs_.size()));
 }
 
 const AnyAngleGrid::Run* AnyAngleGrid::RunsBegin(int y) const {
@@ -145,9 +222,16 @@ std::shared_ptr<const AnyAngleGrid> AnyAngleGridFor(const Map& map, double clear
                                                     ClearanceBound bound) {
   const OccupancyGrid& grid = *map.grid();
   const char* side = bound == ClearanceBound::kUpper ? "upper" : "lower";
-  return map.Derived<AnyAngleGrid>(
-      absl::StrFormat("any-angle-grid clearance=%a bound=%s", clearance, side),
-      [&] { return AnyAngleGrid::Build(grid, clearance, bound); });
+  const std::string key = absl::StrFormat("any-angle-grid clearance=%a bound=%s", clearance, side);
+  if (const Map::GridPatch* patch = map.patch(); patch != nullptr && clearance > 0) {
+    const std::shared_ptr<const AnyAngleGrid> base =
+        AnyAngleGridFor(*patch->base, clearance, bound);
+    return map.Derived<AnyAngleGrid>(key, [&] {
+      return AnyAngleGrid::BuildBlocking(*base, grid, patch->blocked, clearance, bound);
+    });
+  }
+  return map.Derived<AnyAngleGrid>(key,
+                                   [&] { return AnyAngleGrid::Build(grid, clearance, bound); });
 }
 
 }  // namespace swarmplan

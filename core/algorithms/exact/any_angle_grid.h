@@ -29,6 +29,12 @@ class AnyAngleGrid {
   // `grid` must outlive the result when clearance is 0 (it is the planning grid then).
   static AnyAngleGrid Build(const OccupancyGrid& grid, double clearance,
                             ClearanceBound bound = ClearanceBound::kUpper);
+  // Build(grid, clearance, bound) for a `grid` made from the grid of `base` (built with the same
+  // clearance and bound) by blocking the `blocked` cells too: the base's planning grid measured
+  // again only near those cells.
+  static AnyAngleGrid BuildBlocking(const AnyAngleGrid& base, const OccupancyGrid& grid,
+                                    const std::vector<Cell>& blocked, double clearance,
+                                    ClearanceBound bound);
 
   // Same origin as the map's grid; its cells subdivide the map's cells when there is a clearance.
   const OccupancyGrid& planning_grid() const { return *planning_; }
@@ -45,6 +51,9 @@ class AnyAngleGrid {
   int64_t MemoryBytes() const;
 
  private:
+  static AnyAngleGrid OnPlanningGrid(std::shared_ptr<const OccupancyGrid> subdivided);
+  void FindRuns();  // of planning_
+
   std::shared_ptr<const OccupancyGrid> subdivided_;  // null when the clearance is 0
   const OccupancyGrid* planning_ = nullptr;
   std::vector<Run> runs_;
@@ -65,7 +74,15 @@ inline constexpr int64_t kMaxSubdividedCells = 4LL * 1024 * 1024;
 // shrinks with the cell size. The map's edge is no obstacle.
 OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, ClearanceBound bound);
 
-// The cached AnyAngleGrid of a grid map for `clearance` (built on first use, shared by jobs).
+// ClearanceGrid(grid, clearance, bound) for a `grid` made from another by blocking the `blocked`
+// cells too, from that other grid's ClearanceGrid `base` (same clearance and bound): the same
+// cells, measured only near the newly blocked ones.
+OccupancyGrid ClearanceGridBlocking(const OccupancyGrid& base, const OccupancyGrid& grid,
+                                    const std::vector<Cell>& blocked, double clearance,
+                                    ClearanceBound bound);
+
+// The cached AnyAngleGrid of a grid map for `clearance` (built on first use, shared by jobs);
+// for a map with a GridPatch, from its base map's.
 std::shared_ptr<const AnyAngleGrid> AnyAngleGridFor(const Map& map, double clearance,
                                                     ClearanceBound bound = ClearanceBound::kUpper);
 
