@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <string>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
@@ -100,6 +101,23 @@ class ProgressDisplay {
   double time_budget_seconds_;
   bool bar_shown_ = false;
 };
+
+// Whether the final path (the smoothed one, or the raw one when smoothing lost the clearance)
+// turns no tighter than the requested radius, and its tightest turn.
+std::string TurningRadiusNote(const v1::PlanResult& result, double radius) {
+  const bool smoothed_final = result.smoothing_collision_free() && result.smoothed_path_size() > 0;
+  const double curvature =
+      (smoothed_final ? result.smoothed_metrics() : result.raw_metrics()).max_curvature();
+  const std::string tightest =
+      curvature > 0 ? absl::StrCat("tightest turn radius ", FormatNumber(1.0 / curvature))
+                    : std::string("no turn");
+  if (curvature <= (1.0 + 1e-6) / radius) {
+    return absl::StrCat("kept (", tightest, ", asked ", FormatNumber(radius), ")");
+  }
+  return absl::StrCat("NOT kept: ", tightest, ", asked ", FormatNumber(radius),
+                      " (no room to turn wider where the path bends, or a smoothing that does not "
+                      "bound the curvature: use --smoothing bounded-curvature)");
+}
 
 void PrintResultTable(const v1::PlanResult& result) {
   Table table(
@@ -195,6 +213,10 @@ void PrintJob(const v1::Job& job) {
       }
       rows.push_back({"via points", absl::StrCat("reached ", result.via_points_reached(), " of ",
                                                  request.via_points_size(), "; legs ", legs)});
+    }
+    if (const double radius = request.preferences().turning_radius();
+        radius > 0 && result.found()) {
+      rows.push_back({"turning radius", TurningRadiusNote(result, radius)});
     }
     if (result.has_timed_path()) {
       const v1::VehicleLimits& vehicle = request.vehicle();

@@ -10,6 +10,7 @@ import argparse
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -279,6 +280,17 @@ def main():
         cli.check(fleet.get("objective", {}).get("total", 1e9) <=
                   fleet.get("seed_objective", {}).get("total", 0.0) + 1e-9,
                   "on the warehouse the fleet plan is no worse by its objective than its best seed")
+        # The summary says whether the path keeps the turning radius: the fleet plan does; in the
+        # warehouse's aisles no path can turn no tighter than a radius of 50.
+        fleet_args = ("plan", grid_id, "--start", start, "--goal", goal, "--algorithm", "aem-bso",
+                      "--seed", "3", "--max-iterations", "30", "--clearance", "0.5",
+                      "--preferred-clearance", "1.5", "--smoothing", "bounded-curvature")
+        cli.check(re.search(r"turning radius:\s+kept \(tightest turn radius",
+                            cli.run(*fleet_args, "--turning-radius", "2").stdout),
+                  "plan says the turning radius is kept when the smoothed path keeps it")
+        cli.check(re.search(r"turning radius:\s+NOT kept: tightest turn radius",
+                            cli.run(*fleet_args, "--turning-radius", "50").stdout),
+                  "plan says when the path cannot keep the turning radius")
 
         # A timed path: the smoothed path timed for a vehicle, its duration printed.
         timed_args = ("plan", grid_id, "--start", start, "--goal", goal, "--algorithm",
