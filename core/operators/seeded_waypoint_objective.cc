@@ -167,7 +167,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   }
 
   // The best seed by the same fitness, read as the polyline it is.
-  objective->guesses_ = objective->InitialGuesses();
+  objective->guesses_ = objective->BuildGuesses();
   const std::vector<Eigen::VectorXd>& guesses = objective->guesses_;
   Eigen::VectorXd waypoints(2 * k);
   for (size_t j = 0; j < seeds.size(); ++j) {
@@ -264,7 +264,7 @@ void SeededWaypointObjective::FitSmoothedSeeds(const std::vector<SeedPath>& seed
   }
 }
 
-std::vector<Eigen::VectorXd> SeededWaypointObjective::InitialGuesses() const {
+std::vector<Eigen::VectorXd> SeededWaypointObjective::BuildGuesses() const {
   std::vector<Eigen::VectorXd> guesses;
   for (size_t j = 0; j < corridors_.size(); ++j) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);

@@ -46,7 +46,7 @@ class SeededWaypointObjective final : public PathObjective {
   // walls at the hard clearance has no feasible neighbour along most directions; these do), then,
   // with a turning radius, each seed after the bounded-curvature smoothing (its control points
   // moved across to where the smoothed path crosses their sections).
-  std::vector<Eigen::VectorXd> InitialGuesses() const override;
+  std::vector<Eigen::VectorXd> InitialGuesses() const override { return guesses_; }
   // One of the initial guesses with each offset moved by up to a scale drawn log-uniformly from
   // 1/256 to 1 of its range: the rest of the population spread around the seeds, most of it in
   // the feasible neighbourhood of a seed that grazes the walls.
@@ -75,6 +75,8 @@ class SeededWaypointObjective final : public PathObjective {
   // Fills smoothed_guesses_: each seed smoothed to the turning radius, read at the sections.
   void FitSmoothedSeeds(const std::vector<SeedPath>& seeds, double turning_radius, double clearance,
                         const CollisionChecker& checker);
+  // What InitialGuesses returns, from the corridors and smoothed_guesses_.
+  std::vector<Eigen::VectorXd> BuildGuesses() const;
   // The seed a selector s picks: floor(s), clamped to the seeds.
   int SeedIndex(double selector) const;
 
@@ -83,9 +85,9 @@ class SeededWaypointObjective final : public PathObjective {
   std::vector<FitnessEngine> engines_;                // per seed
   std::vector<KnownPath> seed_paths_;  // each seed as a polyline, by the same fitness
   int best_seed_ = 0;
-  double away_ = 0.0;  // the largest move of the second guess of each seed
+  double away_ = 0.0;  // the largest move off the walls of the guesses (a)
   std::vector<Eigen::VectorXd> smoothed_guesses_;
-  std::vector<Eigen::VectorXd> guesses_;  // InitialGuesses, once the objective is built
+  std::vector<Eigen::VectorXd> guesses_;  // BuildGuesses, once the objective is built
   Eigen::VectorXd lower_, upper_;
   Eigen::VectorXd single_;  // engine input, 2k
 };

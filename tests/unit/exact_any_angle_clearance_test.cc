@@ -29,6 +29,21 @@ MapPtr GridMap(int width, int height, const std::vector<Cell>& blocked) {
   return std::make_shared<const Map>(Map::Data(*std::move(grid)));
 }
 
+// Cells of a size x size grid blocked with `probability`, but for the 3 x 3 corners at (0, 0)
+// and (size - 1, size - 1), where the tests start and end.
+std::vector<Cell> RandomBlockedCells(std::mt19937_64& rng, int size, double probability) {
+  std::bernoulli_distribution blocked(probability);
+  std::vector<Cell> cells;
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      if (blocked(rng) && (x > 2 || y > 2) && (x < size - 3 || y < size - 3)) {
+        cells.push_back({x, y});
+      }
+    }
+  }
+  return cells;
+}
+
 double PlannedLength(const MapPtr& map, const std::string& algorithm, const Point2& start,
                      const Point2& goal, double clearance, const ParamValues& params = {}) {
   absl::StatusOr<PlanResult> result =
@@ -117,14 +132,7 @@ TEST(ExactAnyAngleClearanceTest, BoundsBracketThetaStarOnRandomGrids) {
   std::mt19937_64 rng(5);
   int compared = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    std::bernoulli_distribution blocked(0.1);
-    std::vector<Cell> cells;
-    for (int y = 0; y < 24; ++y) {
-      for (int x = 0; x < 24; ++x) {
-        if (blocked(rng) && (x > 2 || y > 2) && (x < 21 || y < 21)) cells.push_back({x, y});
-      }
-    }
-    const MapPtr map = GridMap(24, 24, cells);
+    const MapPtr map = GridMap(24, 24, RandomBlockedCells(rng, 24, 0.1));
     const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*map);
     const double r = trial % 2 == 0 ? 0.5 : 0.8;
     const Point2 start(1.5, 1.5), goal(22.5, 22.5);
@@ -237,13 +245,7 @@ TEST(ExactAnyAngleClearanceTest, ClearanceGridBlockingMatchesARebuild) {
 // exact-any-angle plans on a map patched from another exactly as on the same grid built anew.
 TEST(ExactAnyAngleClearanceTest, APatchedMapPlansAsItsRebuild) {
   std::mt19937_64 rng(17);
-  std::bernoulli_distribution blocked(0.1);
-  std::vector<Cell> cells;
-  for (int y = 0; y < 40; ++y) {
-    for (int x = 0; x < 40; ++x) {
-      if (blocked(rng) && (x > 2 || y > 2) && (x < 37 || y < 37)) cells.push_back({x, y});
-    }
-  }
+  const std::vector<Cell> cells = RandomBlockedCells(rng, 40, 0.1);
   const MapPtr base = GridMap(40, 40, cells);
   std::vector<Cell> wall;
   for (int i = 5; i < 35; ++i) wall.push_back({i, 40 - i});

@@ -28,25 +28,32 @@ PlanRequest FleetRequest(const std::string& algorithm, uint64_t seed) {
   return request;
 }
 
+// Plans `request` into `result`, which must hold a path and the objective of it and of its seed.
+void PlanWithObjectives(const PlanRequest& request, PlanResult& result) {
+  NullObserver observer;
+  absl::StatusOr<PlanResult> planned = RunPlan(DefaultRegistry(), request, {}, observer);
+  ASSERT_TRUE(planned.ok()) << planned.status();
+  ASSERT_TRUE(planned->found);
+  ASSERT_TRUE(planned->objective.has_value());
+  ASSERT_TRUE(planned->seed_objective.has_value());
+  result = *std::move(planned);
+}
+
 TEST(PlanObjectiveTest, ASeededPlanIsNeverWorseThanItsSmoothedSeed) {
   for (const std::string algorithm : {"aem-bso", "pso", "ba"}) {
     for (uint64_t seed = 1; seed <= 6; ++seed) {
       SCOPED_TRACE(algorithm + " seed " + std::to_string(seed));
       const PlanRequest request = FleetRequest(algorithm, seed);
-      NullObserver observer;
-      absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, {}, observer);
-      ASSERT_TRUE(result.ok()) << result.status();
-      ASSERT_TRUE(result->found);
-      ASSERT_TRUE(result->objective.has_value());
-      ASSERT_TRUE(result->seed_objective.has_value());
-      EXPECT_LE(result->objective->Total(), result->seed_objective->Total());
+      PlanResult result;
+      ASSERT_NO_FATAL_FAILURE(PlanWithObjectives(request, result));
+      EXPECT_LE(result.objective->Total(), result.seed_objective->Total());
       // The reported terms are those of the returned path.
       const absl::StatusOr<FleetTerms> again =
-          EvaluateFleetObjective(request.problem, result->smoothed_path);
+          EvaluateFleetObjective(request.problem, result.smoothed_path);
       ASSERT_TRUE(again.ok());
-      EXPECT_DOUBLE_EQ(again->Total(), result->objective->Total());
-      EXPECT_TRUE(result->smoothing_collision_free);
-      EXPECT_GE(seed_testing::Clearance(*request.problem.map, result->smoothed_path), 0.5 - 1e-9);
+      EXPECT_DOUBLE_EQ(again->Total(), result.objective->Total());
+      EXPECT_TRUE(result.smoothing_collision_free);
+      EXPECT_GE(seed_testing::Clearance(*request.problem.map, result.smoothed_path), 0.5 - 1e-9);
     }
   }
 }
@@ -87,14 +94,10 @@ TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASeedThatGrazesTheWalls) {
       request.problem.start = {3.5, 3.5, 0};
       request.problem.goal = {35.5, 25.5, 0};
       request.problem.limits.max_iterations = 30;
-      NullObserver observer;
-      absl::StatusOr<PlanResult> result = RunPlan(DefaultRegistry(), request, {}, observer);
-      ASSERT_TRUE(result.ok()) << result.status();
-      ASSERT_TRUE(result->found);
-      ASSERT_TRUE(result->objective.has_value());
-      ASSERT_TRUE(result->seed_objective.has_value());
-      EXPECT_LT(result->objective->Total(), 0.99 * result->seed_objective->Total());
-      const Path& path = result->smoothed_path;
+      PlanResult result;
+      ASSERT_NO_FATAL_FAILURE(PlanWithObjectives(request, result));
+      EXPECT_LT(result.objective->Total(), 0.99 * result.seed_objective->Total());
+      const Path& path = result.smoothed_path;
       EXPECT_EQ(path.front(), request.problem.start);
       EXPECT_EQ(path.back(), request.problem.goal);
       EXPECT_GE(seed_testing::Clearance(*request.problem.map, path), 0.5 - 1e-9);
