@@ -129,11 +129,17 @@ absl::StatusOr<ParsedArgs> ParseBenchArgs(int argc, const char* const* argv) {
                             ->check(CLI::PositiveNumber);
   app.add_option("--clearance", o.clearance, "Clearance from obstacles, world units")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--preferred-clearance", o.preferred_clearance,
+  app.add_option("--preferred-clearance", o.fleet.preferred_clearance,
                  "Preferred clearance of the fleet objective, world units (0: none)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--turning-radius", o.turning_radius,
+  app.add_option("--turning-radius", o.fleet.turning_radius,
                  "Turning radius of the fleet objective, world units (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--clearance-weight", o.fleet.clearance_weight,
+                 "Weight of the shortfall below the preferred clearance")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--curvature-weight", o.fleet.curvature_weight,
+                 "Weight of the curvature above 1 / turning radius")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--alternatives", o.alternatives,
                  "Paths in other corridors each plan returns besides its own, as K - 1 of "

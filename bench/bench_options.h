@@ -8,6 +8,7 @@
 
 #include "absl/status/statusor.h"
 #include "bench/scenario_selection.h"
+#include "core/fitness/fleet_objective.h"
 #include "core/map/point.h"
 #include "core/params.h"
 
@@ -32,8 +33,7 @@ struct BenchOptions {
   std::optional<double> time_budget_seconds;
   double clearance = 0.0;
   // The fleet objective's preferences of every problem (Problem::fleet).
-  double preferred_clearance = 0.0;
-  double turning_radius = 0.0;
+  FleetObjective fleet;
   int alternatives = 0;  // PlanRequest.alternatives: paths in other corridors asked for
   double optimum_budget_seconds = 10.0;  // per problem, for the exact optimum; 0: none
   std::string smoothing = "none";

@@ -209,8 +209,7 @@ RunRecord RunOnce(const Registry& registry, const BenchProblem& problem, const s
   request.problem.start = problem.start;
   request.problem.goal = problem.goal;
   request.problem.clearance = options.clearance;
-  request.problem.fleet.preferred_clearance = options.preferred_clearance;
-  request.problem.fleet.turning_radius = options.turning_radius;
+  request.problem.fleet = options.fleet;
   if (options.alternatives > 0) request.problem.alternatives = options.alternatives + 1;
   request.problem.limits.max_iterations = options.max_iterations;
   if (options.time_budget_seconds) {
