@@ -109,9 +109,13 @@ double CubicBezierCurvature(const Point2 p[4], double s) {
 
 std::vector<double> FitCornerDistances(const std::vector<double>& wanted,
                                        const std::vector<double>& segments) {
-  const size_t corners = wanted.size();
-  std::vector<double> d(corners);
-  for (size_t i = 0; i < corners; ++i) d[i] = std::min({wanted[i], segments[i], segments[i + 1]});
+  std::vector<double> d = wanted;
+  FitCornerDistances(d.data(), segments.data(), d.size());
+  return d;
+}
+
+void FitCornerDistances(double* d, const double* segments, size_t corners) {
+  for (size_t i = 0; i < corners; ++i) d[i] = std::min({d[i], segments[i], segments[i + 1]});
   // Neighbouring corners share segment i + 1: d_i + d_(i+1) <= its length.
   for (size_t i = 0; i + 1 < corners; ++i) {
     const double length = segments[i + 1];
@@ -124,7 +128,6 @@ std::vector<double> FitCornerDistances(const std::vector<double>& wanted,
       small = large = 0.5 * length;
     }
   }
-  return d;
 }
 
 BezierResult SmoothWithBezier(const Path& raw, const BezierOptions& options,

@@ -52,6 +52,8 @@ double CubicBezierCurvature(const Point2 p[4], double s);
 // that their curves never overlap (d_i + d_(i+1) <= segment i + 1).
 std::vector<double> FitCornerDistances(const std::vector<double>& wanted,
                                        const std::vector<double>& segments);
+// The same in place: d[0..corners) holds the wanted distances, segments[0..corners] the lines.
+void FitCornerDistances(double* d, const double* segments, size_t corners);
 
 struct BezierOptions {
   double min_turning_radius = 1.0;  // world units; d is chosen so κ_max = 1 / radius

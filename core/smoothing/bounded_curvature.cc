@@ -115,6 +115,7 @@ class CornerRounding {
   BoundedCurvatureResult Assemble() const {
     BoundedCurvatureResult result;
     result.corners = static_cast<int>(corners());
+    for (const Point2& p : pts_) result.corner_polygon.push_back(Lift(p));
     const std::vector<double> d = Fit();
     Path& out = result.path;
     out.push_back(Lift(pts_.front()));
@@ -174,6 +175,7 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
     kept.path = std::move(flat);
     kept.max_curvature = turns.max_curvature;
     kept.collision_free = true;
+    kept.corner_polygon = kept.path;
     return kept;
   }
   std::optional<BoundedCurvatureResult> best;
@@ -183,6 +185,7 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
     BoundedCurvatureResult attempt;
     if (simplified.size() < 3) {
       attempt.path = simplified;
+      attempt.corner_polygon = simplified;
       attempt.collision_free = checker.PathFree(simplified, options.clearance);
     } else {
       std::vector<Point2> points;

@@ -18,6 +18,9 @@ struct BoundedCurvatureResult {
   int corners = 0;             // corners of the simplified path that got a curve
   int corners_over = 0;        // corners that had no room or clearance for 1 / radius
   bool collision_free = false;
+  // The straight lines whose corners were rounded (the path itself when it was kept): rounded
+  // again to the same radius (RoundedCornerPath), they give `path` where no curve was shrunk.
+  Path corner_polygon;
 };
 
 // Smooths a 2D path into straight lines joined by continuous-curvature Bezier corners (bezier.h)
