@@ -26,6 +26,10 @@ absl::StatusOr<FitnessEngine> FitnessEngine::Create(const Problem& problem,
     return absl::InvalidArgumentError(
         absl::StrCat("waypoint objective: samples must be at least 2, got ", options.samples));
   }
+  if (!std::isfinite(options.rounded_corner_radius) || options.rounded_corner_radius < 0) {
+    return absl::InvalidArgumentError(
+        "waypoint objective: rounded_corner_radius must be finite and >= 0");
+  }
   if (options.fleet) {
     if (absl::Status status = ValidateFleetObjective(*options.fleet); !status.ok()) return status;
   }
@@ -57,14 +61,20 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
       penalty_(options.penalty),
       fleet_(options.fleet),
       hard_clearance_(problem.clearance),
-      basis_(
-          options.knot_parameters.empty()
-              ? CachedInterpolationBasis(options.interpolation, options.waypoints, options.samples)
-              : std::make_shared<const InterpolationBasis>(
-                    options.interpolation, options.knot_parameters, options.samples)),
       proximity_(std::move(proximity)) {
   const int knots = waypoints_ + 2;
-  const int n = basis_->points();
+  if (options.rounded_corner_radius > 0) {
+    // Straight parts read the field every half cell.
+    rounded_ = std::make_shared<const RoundedCornerPath>(knots, options.rounded_corner_radius,
+                                                         0.5 * proximity_.field().cell_size(),
+                                                         options.samples);
+  } else if (options.knot_parameters.empty()) {
+    basis_ = CachedInterpolationBasis(options.interpolation, options.waypoints, options.samples);
+  } else {
+    basis_ = std::make_shared<const InterpolationBasis>(options.interpolation,
+                                                        options.knot_parameters, options.samples);
+  }
+  const int n = points();
   knot_x_.assign(knots, 0.0);
   knot_y_.assign(knots, 0.0);
   knot_x_.front() = problem.start.x();
@@ -89,8 +99,14 @@ void FitnessEngine::Interpolate(const double* x) {
   const int k = waypoints_;
   std::copy(x, x + k, knot_x_.begin() + 1);
   std::copy(x + k, x + 2 * k, knot_y_.begin() + 1);
-  basis_->Apply(knot_x_.data(), knot_y_.data(), points_x_.data(), points_y_.data(),
-                moments_.data());
+  if (rounded_) {
+    n_ = rounded_->Apply(knot_x_.data(), knot_y_.data(), points_x_.data(), points_y_.data(),
+                         moments_.data());
+  } else {
+    basis_->Apply(knot_x_.data(), knot_y_.data(), points_x_.data(), points_y_.data(),
+                  moments_.data());
+    n_ = basis_->points();
+  }
 }
 
 void FitnessEngine::Evaluate(const Eigen::Ref<const Eigen::MatrixXd>& xs, Evaluation* out) {
@@ -115,15 +131,20 @@ void FitnessEngine::Decode(const Eigen::VectorXd& x, Path& path) const {
   std::copy(x.data(), x.data() + k, kx.begin() + 1);
   std::copy(x.data() + k, x.data() + 2 * k, ky.begin() + 1);
   std::vector<double> px(points_x_.size()), py(points_y_.size());
-  basis_->Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
-  path.resize(px.size());
-  for (size_t i = 0; i < px.size(); ++i) path[i] = Point3(px[i], py[i], 0.0);
+  int n = static_cast<int>(px.size());
+  if (rounded_) {
+    n = rounded_->Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
+  } else {
+    basis_->Apply(kx.data(), ky.data(), px.data(), py.data(), moments.data());
+  }
+  path.resize(n);
+  for (int i = 0; i < n; ++i) path[i] = Point3(px[i], py[i], 0.0);
 }
 
 Evaluation FitnessEngine::EvaluatePath(FleetTerms* terms) {
   const double* x = points_x_.data();
   const double* y = points_y_.data();
-  const int n = static_cast<int>(points_x_.size());
+  const int n = n_;
   double length = 0.0;
   for (int i = 0; i + 1 < n; ++i) {
     const double dx = x[i + 1] - x[i], dy = y[i + 1] - y[i];
@@ -153,7 +174,7 @@ void FitnessEngine::LocatePoints(const double* x, const double* y, int n, bool b
 }
 
 Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double length) {
-  const int n = static_cast<int>(points_x_.size());
+  const int n = n_;
   LocatePoints(x, y, n, /*bilinear=*/false);
   const int violations = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
                                                             cell_value_.data(), n);
@@ -162,7 +183,7 @@ Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double 
 
 Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
                                 FleetTerms* terms) {
-  const int n = static_cast<int>(points_x_.size());
+  const int n = n_;
   FleetTerms t = ClearanceTerms(x, y, n, length);
   t.curvature = CurvatureTerm(x, y, segment_.data(), n);
   if (terms != nullptr) *terms = t;

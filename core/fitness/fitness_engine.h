@@ -8,6 +8,7 @@
 #include "absl/status/statusor.h"
 #include "core/fitness/fleet_objective.h"
 #include "core/fitness/interpolation_basis.h"
+#include "core/fitness/rounded_corner_path.h"
 #include "core/map/distance_field.h"
 #include "core/operators/objective.h"
 #include "core/operators/obstacle_proximity.h"
@@ -26,13 +27,16 @@ struct WaypointFitnessOptions {
   // The spline's parameter at each knot, start and goal included (waypoints + 2 increasing
   // values); empty: 0, 1, 2, ... as the papers' paths have it.
   std::vector<double> knot_parameters;
+  // > 0 (world units): the knots are the corners of a RoundedCornerPath turning no tighter than
+  // this, instead of the interpolation; `samples` then bounds its straight parts' points.
+  double rounded_corner_radius = 0.0;
 };
 
 // The fitness of 2D waypoint paths, shared by every waypoint planner. A decision vector
 // [x1..xk, y1..yk] becomes the path start -> waypoints -> goal through the cached
 // InterpolationBasis (each point a local combination of the knots and, for the spline, of their
-// second derivatives from one tridiagonal sweep): O(k + points) per path. Then one pass over
-// its points:
+// second derivatives from one tridiagonal sweep), or as a RoundedCornerPath: O(k + points) per
+// path. Then one pass over its points:
 // - the papers' z = L (1 + M xi) (AEM-BSO eq 21): xi from ObstacleProximity's screened count,
 //   which reads the map's distance field once per point and tests exactly only the segments
 //   near an obstacle, so xi is the reference count; feasible when xi = 0;
@@ -47,7 +51,7 @@ class FitnessEngine {
 
   int waypoints() const { return waypoints_; }
   // Points of each decoded path.
-  int points() const { return basis_->points(); }
+  int points() const { return rounded_ ? rounded_->max_points() : basis_->points(); }
   const ObstacleProximity& proximity() const { return proximity_; }
 
   // out[j] = the fitness of column j of xs (2k rows).
@@ -88,16 +92,18 @@ class FitnessEngine {
   double penalty_;
   std::optional<FleetObjective> fleet_;
   double hard_clearance_;
-  std::shared_ptr<const InterpolationBasis> basis_;
+  std::shared_ptr<const InterpolationBasis> basis_;   // unless rounded_
+  std::shared_ptr<const RoundedCornerPath> rounded_;  // when rounded_corner_radius > 0
   // The knots start, waypoints, goal per coordinate, and the basis's scratch.
   std::vector<double> knot_x_, knot_y_, moments_;
   ObstacleProximity proximity_;
-  std::vector<double> points_x_, points_y_;  // the path being evaluated
-  std::vector<double> segment_;              // segment lengths of one path
-  std::vector<double> clearance_;            // the field at its points (fleet objective)
-  std::vector<int32_t> cell_;                // their cells in the proximity's field
-  std::vector<float> cell_value_;            // and the field's value there
-  bool feasible_ = false;                    // of the last ClearanceTerms
+  std::vector<double> points_x_, points_y_;  // the path being evaluated, n_ points of them
+  int n_ = 0;
+  std::vector<double> segment_;    // segment lengths of one path
+  std::vector<double> clearance_;  // the field at its points (fleet objective)
+  std::vector<int32_t> cell_;      // their cells in the proximity's field
+  std::vector<float> cell_value_;  // and the field's value there
+  bool feasible_ = false;          // of the last ClearanceTerms
 };
 
 }  // namespace swarmplan
