@@ -6,7 +6,9 @@
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "core/fitness/rounded_corner_path.h"
 #include "core/geometry/collision.h"
+#include "core/path_metrics.h"
 #include "core/random.h"
 #include "core/smoothing/bounded_curvature.h"
 
@@ -24,9 +26,14 @@ struct Station {
   int vertex = -1;  // index into the seed's path, or -1 on a segment
 };
 
-// The stations of one seed, `k` of them: interior vertices, then segment midpoints, then the
-// midpoints of the longest gaps; evenly chosen vertices when there are more than k.
-std::vector<Station> Stations(const Path& path, int k) {
+// The stations of one seed, `k` of them: interior vertices, then the midpoints of the longest
+// gaps between stations; evenly chosen vertices when there are more than k. `reserved[v]` (empty:
+// none) is how far along the path on each side of vertex v no midpoint should go: the extent of
+// its rounded corner, which a control point inside would cut short. A gap's free part is what
+// the stations at its ends leave of it; the longest free part gets the midpoint, or, without
+// reservations and none left anywhere, the longest gap; with reservations there are then fewer
+// than k stations.
+std::vector<Station> Stations(const Path& path, int k, const std::vector<double>& reserved) {
   std::vector<double> at(path.size(), 0.0);
   for (size_t i = 1; i < path.size(); ++i)
     at[i] = at[i - 1] + (path[i] - path[i - 1]).head<2>().norm();
@@ -42,19 +49,28 @@ std::vector<Station> Stations(const Path& path, int k) {
   } else {
     for (int v = 1; v <= interior; ++v) stations.push_back({at[v], v});
   }
+  auto reach = [&](const Station& station) {
+    return station.vertex > 0 && !reserved.empty() ? reserved[station.vertex] : 0.0;
+  };
   while (static_cast<int>(stations.size()) < k) {
-    // Split the longest gap between consecutive stations (start and goal included).
-    double best_gap = -1.0, best_mid = 0.0;
-    double previous = 0.0;
+    double best_free = -std::numeric_limits<double>::infinity(), best_mid = 0.0;
+    double best_gap = -1.0, gap_mid = 0.0;
     for (size_t i = 0; i <= stations.size(); ++i) {
-      const double next = i < stations.size() ? stations[i].s : total;
-      if (next - previous > best_gap) {
-        best_gap = next - previous;
-        best_mid = 0.5 * (previous + next);
+      const double from = i > 0 ? stations[i - 1].s : 0.0;
+      const double to = i < stations.size() ? stations[i].s : total;
+      const double free_from = from + (i > 0 ? reach(stations[i - 1]) : 0.0);
+      const double free_to = to - (i < stations.size() ? reach(stations[i]) : 0.0);
+      if (free_to - free_from > best_free) {
+        best_free = free_to - free_from;
+        best_mid = 0.5 * (free_from + free_to);
       }
-      previous = next;
+      if (to - from > best_gap) {
+        best_gap = to - from;
+        gap_mid = 0.5 * (from + to);
+      }
     }
-    stations.push_back({best_mid, -1});
+    if (best_free <= 0 && !reserved.empty()) break;
+    stations.push_back({best_free > 0 ? best_mid : gap_mid, -1});
     std::sort(stations.begin(), stations.end(),
               [](const Station& a, const Station& b) { return a.s < b.s; });
   }
@@ -80,6 +96,19 @@ std::optional<double> CrossingAlong(const Point2& p, const Point2& n, double bel
   return best;
 }
 
+// How far along the path each vertex's corner reaches when RoundedCornerPath rounds it.
+std::vector<double> CornerExtents(const Path& polygon, double radius) {
+  const int n = static_cast<int>(polygon.size());
+  std::vector<double> x(n), y(n), segment(n), extent(n);
+  for (int i = 0; i < n; ++i) {
+    x[i] = polygon[i].x();
+    y[i] = polygon[i].y();
+  }
+  RoundedCornerPath(n, radius, 1.0, 2)
+      .CornerDistances(x.data(), y.data(), segment.data(), extent.data());
+  return extent;
+}
+
 double FieldCell(const Map& map) {
   if (const OccupancyGrid* grid = map.grid()) return grid->resolution();
   return map.world()->distance_field().cell_size();
@@ -97,22 +126,49 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   if (max_control_points < 1) {
     return absl::InvalidArgumentError("seeded waypoint objective: max_control_points must be >= 1");
   }
-  // One control point per interior vertex and per segment, the same count for every seed.
-  int k = 1;
-  double longest = 0.0;
-  for (const SeedPath& seed : seeds) {
-    k = std::max(k, 2 * static_cast<int>(seed.path.size()) - 3);
-    longest = std::max(longest, seed.length);
-  }
-  k = std::min(k, max_control_points);
-
   const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*problem.map);
   const double cell = FieldCell(*problem.map);
+  // With a turning radius, where the bounded-curvature smoothing of a seed keeps the radius, the
+  // control points sit on the lines whose corners it rounded, and the seed's engine rounds their
+  // corners in the same way (RoundedCornerPath): with every offset 0 the path is the smoothed
+  // seed, and each path the swarm finds that turns no tighter than the radius is one the
+  // smoothing keeps as it is. Elsewhere the control points sit on the seed and a spline joins
+  // them.
+  const double radius = options.fleet ? options.fleet->turning_radius : 0.0;
+  std::vector<Path> bases;
+  std::vector<bool> rounded;
+  std::vector<std::optional<Path>> smoothed;  // each seed after the smoothing, if it is clear
+  for (const SeedPath& seed : seeds) {
+    bases.push_back(seed.path);
+    rounded.push_back(false);
+    smoothed.emplace_back();
+    if (radius <= 0) continue;
+    BoundedCurvatureOptions smoothing;
+    smoothing.turning_radius = radius;
+    smoothing.clearance = problem.clearance;
+    BoundedCurvatureResult result = SmoothToTurningRadius(seed.path, smoothing, *checker);
+    if (!result.collision_free) continue;
+    smoothed.back() = std::move(result.path);
+    if (result.corners_over == 0 && result.corner_polygon.size() >= 2) {
+      bases.back() = std::move(result.corner_polygon);
+      rounded.back() = true;
+    }
+  }
+  // One control point per interior vertex and per segment, the same count for every seed.
+  int k = 1;
+  for (const Path& base : bases) k = std::max(k, 2 * static_cast<int>(base.size()) - 3);
+  k = std::min(k, max_control_points);
   std::vector<std::vector<ControlPoint>> corridors;
   // Per seed, the spline's parameter at each knot, from the arc length between its stations.
   std::vector<std::vector<double>> parameters;
-  for (const SeedPath& seed : seeds) {
-    const std::vector<Station> stations = Stations(seed.path, k);
+  for (size_t j = 0; j < bases.size(); ++j) {
+    const Path& base = bases[j];
+    const double base_length = PathLength(base);
+    // A rounded seed has as many control points as its own vertices and segments (a control
+    // point inside a curve would cut it short); the others share the largest count.
+    const int own = std::min(k, std::max(1, 2 * static_cast<int>(base.size()) - 3));
+    const std::vector<Station> stations =
+        rounded[j] ? Stations(base, own, CornerExtents(base, radius)) : Stations(base, k, {});
     std::vector<ControlPoint> points;
     // The spline's parameter is centripetal: each step the square root of the arc length
     // between the stations (at least a millionth of a cell's).
@@ -123,10 +179,10 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
     for (size_t i = 0; i < stations.size(); ++i) {
       const double before = stations[i].s - (i > 0 ? stations[i - 1].s : 0.0);
       const double after =
-          (i + 1 < stations.size() ? stations[i + 1].s : seed.length) - stations[i].s;
-      const PathPosition at = PositionAt(seed.path, stations[i].s);
-      const Point2 normal = stations[i].vertex > 0 ? VertexNormal(seed.path, stations[i].vertex)
-                                                   : SegmentNormal(seed.path, at.segment);
+          (i + 1 < stations.size() ? stations[i + 1].s : base_length) - stations[i].s;
+      const PathPosition at = PositionAt(base, stations[i].s);
+      const Point2 normal = stations[i].vertex > 0 ? VertexNormal(base, stations[i].vertex)
+                                                   : SegmentNormal(base, at.segment);
       const double reach = std::max(before + after, 4.0 * cell);
       ControlPoint c;
       c.section = SectionAt(*checker, at.point, normal, problem.clearance, reach, 0.05 * cell);
@@ -135,12 +191,11 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
       points.push_back(c);
       t.push_back(t.back() + centripetal_step(stations[i].s - (i > 0 ? stations[i - 1].s : 0.0)));
     }
-    t.push_back(t.back() + centripetal_step(seed.length - stations.back().s));
+    t.push_back(t.back() + centripetal_step(base_length - stations.back().s));
     corridors.push_back(std::move(points));
     parameters.push_back(std::move(t));
   }
 
-  options.waypoints = k;
   if (options.interpolation == Interpolation::kLinear)
     options.interpolation = Interpolation::kPolyline;
   // Per seed an engine whose spline follows the seed's arc length, with points enough to read
@@ -149,10 +204,12 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   std::vector<WaypointFitnessOptions> seed_options;
   for (size_t j = 0; j < seeds.size(); ++j) {
     WaypointFitnessOptions o = options;
+    o.waypoints = static_cast<int>(corridors[j].size());
     const int wanted = static_cast<int>(std::min<double>(
         kMaxPoints, std::ceil(1.5 * seeds[j].length / (kPointSpacingCells * cell))));
     o.samples = std::max(options.samples, wanted);
     o.knot_parameters = parameters[j];
+    if (rounded[j]) o.rounded_corner_radius = radius;
     absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, o);
     if (!engine.ok()) return engine.status();
     engines.push_back(*std::move(engine));
@@ -162,21 +219,27 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   std::unique_ptr<SeededWaypointObjective> objective(
       new SeededWaypointObjective(k, std::move(corridors), std::move(engines)));
   objective->away_ = std::max(cell, options.fleet ? options.fleet->preferred_clearance : 0.0);
-  if (options.fleet && options.fleet->turning_radius > 0) {
-    objective->FitSmoothedSeeds(seeds, options.fleet->turning_radius, problem.clearance, *checker);
+  for (size_t j = 0; j < seeds.size(); ++j) {
+    if (smoothed[j] && !rounded[j]) objective->FitSmoothedSeed(static_cast<int>(j), *smoothed[j]);
   }
 
-  // The best seed by the same fitness, read as the polyline it is.
+  // The best seed by the same fitness, read as the polyline it is, or where the engine rounds its
+  // corners, as the smoothed seed it is then.
   objective->guesses_ = objective->BuildGuesses();
   const std::vector<Eigen::VectorXd>& guesses = objective->guesses_;
   Eigen::VectorXd waypoints(2 * k);
   for (size_t j = 0; j < seeds.size(); ++j) {
-    WaypointFitnessOptions polyline = seed_options[j];
-    polyline.interpolation = Interpolation::kPolyline;
-    absl::StatusOr<FitnessEngine> polyline_engine = FitnessEngine::Create(problem, polyline);
-    if (!polyline_engine.ok()) return polyline_engine.status();
     objective->Waypoints(guesses[j].data(), waypoints.data());
-    const Evaluation e = polyline_engine->Evaluate(waypoints);
+    Evaluation e;
+    if (rounded[j]) {
+      e = objective->engines_[j].Evaluate(waypoints);
+    } else {
+      WaypointFitnessOptions polyline = seed_options[j];
+      polyline.interpolation = Interpolation::kPolyline;
+      absl::StatusOr<FitnessEngine> polyline_engine = FitnessEngine::Create(problem, polyline);
+      if (!polyline_engine.ok()) return polyline_engine.status();
+      e = polyline_engine->Evaluate(waypoints);
+    }
     objective->seed_paths_.push_back(KnownPath{seeds[j].path, e.fitness});
     if (e.fitness < objective->seed_paths_[objective->best_seed_].fitness) {
       objective->best_seed_ = static_cast<int>(j);
@@ -205,13 +268,14 @@ int SeededWaypointObjective::CorridorOf(const Eigen::VectorXd& x) const { return
 
 void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) const {
   const std::vector<ControlPoint>& points = corridors_[SeedIndex(x[0])];
-  for (int i = 0; i < k_; ++i) {
+  const int n = static_cast<int>(points.size());
+  for (int i = 0; i < n; ++i) {
     const ControlPoint& c = points[i];
     const double u = x[1 + i], v = x[1 + k_ + i];
     const double across = v >= 0 ? v * c.section.left : v * c.section.right;
     const Point2 p = c.section.point + u * c.along * c.tangent + across * c.section.normal;
     waypoints[i] = p.x();
-    waypoints[k_ + i] = p.y();
+    waypoints[n + i] = p.y();
   }
 }
 
@@ -235,33 +299,17 @@ Path SeededWaypointObjective::Decode(const Eigen::VectorXd& x) {
   return path;
 }
 
-void SeededWaypointObjective::FitSmoothedSeeds(const std::vector<SeedPath>& seeds,
-                                               double turning_radius, double clearance,
-                                               const CollisionChecker& checker) {
-  BoundedCurvatureOptions smoothing;
-  smoothing.turning_radius = turning_radius;
-  smoothing.clearance = clearance;
-  for (size_t j = 0; j < seeds.size(); ++j) {
-    const BoundedCurvatureResult smoothed =
-        SmoothToTurningRadius(seeds[j].path, smoothing, checker);
-    if (!smoothed.collision_free) continue;
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
-    x[0] = static_cast<double>(j) + 0.5;
-    bool fitted = true;
-    for (int i = 0; i < k_ && fitted; ++i) {
-      const CorridorSection& s = corridors_[j][i].section;
-      const std::optional<double> t =
-          CrossingAlong(s.point, s.normal, s.right, s.left, smoothed.path);
-      if (!t) {
-        fitted = false;
-      } else if (*t > 0) {
-        x[1 + k_ + i] = *t / s.left;
-      } else if (*t < 0) {
-        x[1 + k_ + i] = *t / s.right;
-      }
-    }
-    if (fitted) smoothed_guesses_.push_back(std::move(x));
+void SeededWaypointObjective::FitSmoothedSeed(int j, const Path& smoothed) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
+  x[0] = static_cast<double>(j) + 0.5;
+  for (size_t i = 0; i < corridors_[j].size(); ++i) {
+    const CorridorSection& s = corridors_[j][i].section;
+    const std::optional<double> t = CrossingAlong(s.point, s.normal, s.right, s.left, smoothed);
+    if (!t) return;
+    if (*t > 0) x[1 + k_ + i] = *t / s.left;
+    if (*t < 0) x[1 + k_ + i] = *t / s.right;
   }
+  smoothed_guesses_.push_back(std::move(x));
 }
 
 std::vector<Eigen::VectorXd> SeededWaypointObjective::BuildGuesses() const {
@@ -278,7 +326,7 @@ std::vector<Eigen::VectorXd> SeededWaypointObjective::BuildGuesses() const {
     for (size_t j = 0; j < corridors_.size(); ++j) {
       Eigen::VectorXd x = Eigen::VectorXd::Zero(1 + 2 * k_);
       x[0] = static_cast<double>(j) + 0.5;
-      for (int i = 0; i < k_; ++i) {
+      for (size_t i = 0; i < corridors_[j].size(); ++i) {
         const CorridorSection& s = corridors_[j][i].section;
         const double move = std::clamp(0.5 * (s.left - s.right), -away, away);
         if (move > 0 && s.left > 0) x[1 + k_ + i] = move / s.left;

@@ -19,15 +19,22 @@ namespace swarmplan {
 // [s, u1..uk, v1..vk] picks seed floor(s) (s in [0, K)) and moves each of its k control points
 // along the seed by u_i (in [-1, 1], times half the distance to the nearer neighbouring control
 // point) and across it by v_i (in [-1, 1], times the free extent of its corridor on that side,
-// CorridorSection). The control points of a seed are its interior vertices and the midpoints of
-// its segments, in order (more midpoints on the longest gaps when another seed has more, evenly
-// thinned beyond `max_control_points`), so with every offset 0 the path is the seed itself
-// under linear interpolation. The moved points are the waypoints [x1..xk, y1..yk] of the seed's
-// FitnessEngine, which interpolates and evaluates them as for every waypoint planner; its spline
-// has a centripetal parameter (steps the square root of the arc length between the control
-// points along the seed), so it neither overshoots between unevenly spaced control points nor
-// loops where close ones move apart. The search space grows with the seeds' turns, not with
-// the map.
+// CorridorSection). The control points of a seed are the interior vertices and the midpoints of
+// the segments of its base polyline, in order (more midpoints on the longest gaps when another
+// seed has more, evenly thinned beyond `max_control_points`; a seed whose corners are rounded
+// has its own count, no midpoint inside a curve, and leaves the decision vector's other offsets
+// unused). The moved points are the
+// waypoints [x1..xk, y1..yk] of the seed's FitnessEngine, which joins and evaluates them as for
+// every waypoint planner:
+// - with a turning radius, where the bounded-curvature smoothing of the seed keeps the radius,
+//   the base is the polygon whose corners the smoothing rounded (corner_polygon) and the engine
+//   rounds the corners of the moved points in the same way (RoundedCornerPath): with every
+//   offset 0 the path is the smoothed seed, and a path that turns within the radius is one the
+//   smoothing keeps as it is, so the swarm searches the paths the plan returns;
+// - otherwise the base is the seed and the engine's spline has a centripetal parameter (steps
+//   the square root of the arc length between the control points along the seed), so it neither
+//   overshoots between unevenly spaced control points nor loops where close ones move apart.
+// The search space grows with the seeds' turns, not with the map.
 class SeededWaypointObjective final : public PathObjective {
  public:
   static absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> Create(
@@ -43,9 +50,9 @@ class SeededWaypointObjective final : public PathObjective {
   // The seeds themselves (selector at the middle of each seed's interval, every offset 0), then
   // each seed with its control points moved toward the middle of their corridor sections by at
   // most a = max(preferred clearance, a field cell), a / 4 and a / 16 (a seed that grazes the
-  // walls at the hard clearance has no feasible neighbour along most directions; these do), then,
-  // with a turning radius, each seed after the bounded-curvature smoothing (its control points
-  // moved across to where the smoothed path crosses their sections).
+  // walls at the hard clearance has no feasible neighbour along most directions; these do), then
+  // each spline seed after the bounded-curvature smoothing (its control points moved across to
+  // where the smoothed path crosses their sections).
   std::vector<Eigen::VectorXd> InitialGuesses() const override { return guesses_; }
   // One of the initial guesses with each offset moved by up to a scale drawn log-uniformly from
   // 1/256 to 1 of its range: the rest of the population spread around the seeds, most of it in
@@ -72,9 +79,8 @@ class SeededWaypointObjective final : public PathObjective {
   };
   SeededWaypointObjective(int k, std::vector<std::vector<ControlPoint>> corridors,
                           std::vector<FitnessEngine> engines);
-  // Fills smoothed_guesses_: each seed smoothed to the turning radius, read at the sections.
-  void FitSmoothedSeeds(const std::vector<SeedPath>& seeds, double turning_radius, double clearance,
-                        const CollisionChecker& checker);
+  // Adds to smoothed_guesses_ seed j smoothed to the turning radius, read at its sections.
+  void FitSmoothedSeed(int j, const Path& smoothed);
   // What InitialGuesses returns, from the corridors and smoothed_guesses_.
   std::vector<Eigen::VectorXd> BuildGuesses() const;
   // The seed a selector s picks: floor(s), clamped to the seeds.
@@ -83,7 +89,9 @@ class SeededWaypointObjective final : public PathObjective {
   int k_;
   std::vector<std::vector<ControlPoint>> corridors_;  // per seed, k control points
   std::vector<FitnessEngine> engines_;                // per seed
-  std::vector<KnownPath> seed_paths_;  // each seed as a polyline, by the same fitness
+  // Each seed and its fitness by the same engines: as the polyline it is or, where its engine
+  // rounds the corners, as the smoothed seed (every offset 0).
+  std::vector<KnownPath> seed_paths_;
   int best_seed_ = 0;
   double away_ = 0.0;  // the largest move off the walls of the guesses (a)
   std::vector<Eigen::VectorXd> smoothed_guesses_;

@@ -106,6 +106,29 @@ TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASeedThatGrazesTheWalls) {
   }
 }
 
+// Where the smoothing of the seed keeps the turning radius, the swarm moves the corners of the
+// smoothed seed and the engine rounds them as the smoothing does: a path the swarm finds within
+// the radius is returned as it is, so what the swarm gains is what the plan gains.
+TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASmoothedSeedThatKeepsTheRadius) {
+  for (const std::string algorithm : {"aem-bso", "pso", "ba"}) {
+    for (uint64_t seed = 1; seed <= 2; ++seed) {
+      SCOPED_TRACE(algorithm + " seed " + std::to_string(seed));
+      PlanRequest request = FleetRequest(algorithm, seed);
+      request.problem.limits.max_iterations = 30;
+      PlanResult result;
+      ASSERT_NO_FATAL_FAILURE(PlanWithObjectives(request, result));
+      EXPECT_LT(result.objective->Total(), result.seed_objective->Total());
+      EXPECT_GT(result.best_iteration, 0);
+      EXPECT_EQ(result.smoothed_path, result.raw_path);
+      const Path& path = result.smoothed_path;
+      EXPECT_EQ(path.front(), request.problem.start);
+      EXPECT_EQ(path.back(), request.problem.goal);
+      EXPECT_GE(seed_testing::Clearance(*request.problem.map, path), 0.5 - 1e-9);
+      EXPECT_LE(contract::LargestMengerCurvature(path), 0.5 + 1e-6);
+    }
+  }
+}
+
 TEST(PlanObjectiveTest, PlansWithoutSeedsReportOnlyTheirOwnObjective) {
   PlanRequest request = FleetRequest("exact-any-angle", 1);
   NullObserver observer;
