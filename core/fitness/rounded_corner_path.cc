@@ -59,10 +59,10 @@ struct StraightWriter {
   // One cubic, its first point excluded (it ends the line before it).
   void Cubic(const Point2 c[4], bool reversed) {
     const double polygon = (c[1] - c[0]).norm() + (c[2] - c[1]).norm() + (c[3] - c[2]).norm();
-    const int chords =
-        kSmoothingChordsPerCubic *
-        std::clamp(static_cast<int>(std::ceil(polygon / (kSmoothingChordsPerCubic * near_curve))),
-                   1, kMaxChordsPerCubic / kSmoothingChordsPerCubic);
+    // Clamped before the conversion: a tiny radius makes the quotient huge.
+    const double rounds = std::clamp(std::ceil(polygon / (kSmoothingChordsPerCubic * near_curve)),
+                                     1.0, double{kMaxChordsPerCubic / kSmoothingChordsPerCubic});
+    const int chords = kSmoothingChordsPerCubic * static_cast<int>(rounds);
     for (int i = 1; i <= chords; ++i) {
       const double s = static_cast<double>(i) / chords;
       Point(CubicBezierPoint(c, reversed ? 1.0 - s : s));
