@@ -228,6 +228,26 @@ bool GridCollisionChecker::SegmentFree(const Point3& a, const Point3& b, double 
   return SquareDistance(ua, ub, floor, /*stop_below_bound=*/true) >= floor;
 }
 
+bool GridCollisionChecker::SegmentFreeByScan(const Point3& a, const Point3& b,
+                                             double clearance) const {
+  const Point2 ua = (a.head<2>() - grid_.origin()) * inv_resolution_;
+  const Point2 ub = (b.head<2>() - grid_.origin()) * inv_resolution_;
+  if (!InMap(ua) || !InMap(ub)) return false;
+  if (clearance <= 0) return TraversalFree(ua, ub);
+  const double floor = clearance * inv_resolution_;
+  const Point2 lo = ua.cwiseMin(ub), hi = ua.cwiseMax(ub);
+  const int x0 = std::max(0, static_cast<int>(std::floor(lo.x() - floor)));
+  const int x1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(hi.x() + floor)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(lo.y() - floor)));
+  const int y1 = std::min(grid_.height() - 1, static_cast<int>(std::floor(hi.y() + floor)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (grid_.IsBlocked(x, y) && SegmentSquareDistance(ua, ub, x, y) < floor) return false;
+    }
+  }
+  return true;
+}
+
 bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const {
   if (!InMap(a) || !InMap(b)) return false;
   const double y_min = std::min(a.y(), b.y());

@@ -26,6 +26,11 @@ class GridCollisionChecker final : public CollisionChecker {
   // decided by the exact distance, so the answer is exact either way.
   bool SegmentFree(const Point3& a, const Point3& b, double clearance) const override;
 
+  // SegmentFree's verdict from a scan of every cell within `clearance` of the segment's box (an
+  // exact segment-square distance per blocked cell): cheaper than tracing for segments of a cell
+  // or so near obstacles, as the fitness engine's are; the cost grows with the box's area.
+  bool SegmentFreeByScan(const Point3& a, const Point3& b, double clearance) const;
+
   // True when every cell whose closed square meets the segment is free (a and b in grid
   // coordinates, i.e. (world - origin) / resolution). Exposed for tests and grid planners.
   bool TraversalFree(const Point2& a, const Point2& b) const;

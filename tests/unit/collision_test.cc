@@ -184,6 +184,7 @@ TEST(GridCollisionTest, TraversalMatchesExactGeometry) {
   }
 }
 
+// SegmentFree and SegmentFreeByScan against the brute-force distance to every blocked square.
 TEST(GridCollisionTest, SegmentChecksWithClearanceAreExact) {
   Rng rng(13);
   for (int trial = 0; trial < 4; ++trial) {
@@ -198,6 +199,8 @@ TEST(GridCollisionTest, SegmentChecksWithClearanceAreExact) {
       const double c = rng.Uniform(0.05, 1.5);
       if (std::abs(exact - c) > 1e-9) {
         ASSERT_EQ(checker.SegmentFree(P(a.x(), a.y()), P(b.x(), b.y()), c), exact >= c)
+            << a.transpose() << " -> " << b.transpose() << " clearance " << c;
+        ASSERT_EQ(checker.SegmentFreeByScan(P(a.x(), a.y()), P(b.x(), b.y()), c), exact >= c)
             << a.transpose() << " -> " << b.transpose() << " clearance " << c;
       }
       const double got = checker.SegmentClearance(P(a.x(), a.y()), P(b.x(), b.y()));
