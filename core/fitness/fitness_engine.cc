@@ -74,6 +74,9 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
     basis_ = std::make_shared<const InterpolationBasis>(options.interpolation,
                                                         options.knot_parameters, options.samples);
   }
+  if (fleet_ && map_->grid() != nullptr) {
+    grid_checker_ = std::make_shared<const GridCollisionChecker>(*map_->grid());
+  }
   const int n = points();
   knot_x_.assign(knots, 0.0);
   knot_y_.assign(knots, 0.0);
@@ -210,8 +213,9 @@ FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n
     shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;
     violation += std::max(0.0, hard - clearance_[i]) * ds;
   }
-  const int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
-                                                           cell_value_.data(), n);
+  int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
+                                                     cell_value_.data(), n);
+  if (obstacles == 0 && grid_checker_ && GridSegmentTooClose(x, y, n)) obstacles = 1;
   violation += length * obstacles;
   if (outside) {
     for (int i = 0; i < n; ++i) {
@@ -227,6 +231,25 @@ FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n
   t.clearance = f.preferred_clearance > 0 ? f.clearance_weight * shortfall : 0.0;
   t.violation = f.violation_weight * violation;
   return t;
+}
+
+bool FitnessEngine::GridSegmentTooClose(const double* x, const double* y, int n) const {
+  // The component labels are read per cell: a path may pass within the hard clearance of a
+  // blocked cell while every cell it crosses is farther. A segment whose ends' cells prove both
+  // ends farther than the clearance plus half its length is clear; the others get the exact test.
+  const double slack = DistanceField::kCellSlack * proximity_.field().cell_size();
+  for (int i = 0; i + 1 < n; ++i) {
+    if (cell_[i] >= 0 && cell_[i + 1] >= 0 &&
+        std::min(cell_value_[i], cell_value_[i + 1]) - slack >=
+            hard_clearance_ + 0.5 * segment_[i]) {
+      continue;
+    }
+    if (!grid_checker_->SegmentFreeByScan(Point3(x[i], y[i], 0.0), Point3(x[i + 1], y[i + 1], 0.0),
+                                          hard_clearance_)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 double FitnessEngine::CurvatureTerm(const double* x, const double* y, const double* segment,

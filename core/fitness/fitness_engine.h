@@ -9,6 +9,7 @@
 #include "core/fitness/fleet_objective.h"
 #include "core/fitness/interpolation_basis.h"
 #include "core/fitness/rounded_corner_path.h"
+#include "core/geometry/grid_collision.h"
 #include "core/map/distance_field.h"
 #include "core/operators/objective.h"
 #include "core/operators/obstacle_proximity.h"
@@ -42,7 +43,10 @@ struct WaypointFitnessOptions {
 //   near an obstacle, so xi is the reference count; feasible when xi = 0;
 // - or the FleetObjective J, its distances by bilinear interpolation in the distance field
 //   (the ShapeWorld's own, or one built from the grid and cached with the map); feasible when
-//   ObstacleProximity's exact count below the hard clearance is 0.
+//   no obstacle is closer than the hard clearance, the verdict of the map's CollisionChecker:
+//   ObstacleProximity's count (exact segment distances on worlds; on grids, the components
+//   whose cells the path crosses) and, on a grid where that count is 0, the checker's exact test
+//   of every segment the field cannot prove clear, one more obstacle when one fails.
 // Single-threaded; buffers are sized at creation, so evaluating allocates nothing.
 class FitnessEngine {
  public:
@@ -84,6 +88,9 @@ class FitnessEngine {
   // Length, clearance and violation terms of the n points (segment_ holds their segments); sets
   // feasible_.
   FleetTerms ClearanceTerms(const double* x, const double* y, int n, double length);
+  // On a grid, whether a segment of the n points comes closer to a blocked cell than the hard
+  // clearance (the checker's exact test where the located cells' values cannot rule it out).
+  bool GridSegmentTooClose(const double* x, const double* y, int n) const;
   // The weighted curvature excess of the n points with the given segment lengths.
   double CurvatureTerm(const double* x, const double* y, const double* segment, int n) const;
 
@@ -97,6 +104,8 @@ class FitnessEngine {
   // The knots start, waypoints, goal per coordinate, and the basis's scratch.
   std::vector<double> knot_x_, knot_y_, moments_;
   ObstacleProximity proximity_;
+  // A grid's exact collision checker (fleet objective), which decides feasibility.
+  std::shared_ptr<const GridCollisionChecker> grid_checker_;
   std::vector<double> points_x_, points_y_;  // the path being evaluated, n_ points of them
   int n_ = 0;
   std::vector<double> segment_;    // segment lengths of one path

@@ -13,7 +13,9 @@ namespace swarmplan {
 // d the distance to the nearest obstacle from the map's distance field (negative inside an
 // obstacle; near an obstacle it may read low by up to about 1.5 field cells), h two field
 // cells, kappa the discrete curvature at each sample, xi the number of obstacles the path comes
-// closer to than c_hard by exact segment tests (ObstacleProximity; feasible when xi = 0). The
+// closer to than c_hard (ObstacleProximity: exact segment distances on worlds; on grids the
+// components whose cells it crosses, and 1 when there are none but the collision checker's exact
+// test finds a segment closer than c_hard; feasible when xi = 0, the checker's verdict). The
 // integral below c_hard - h keeps deeply infeasible paths comparable. A point outside the map adds
 // its distance outside to it.
 struct FleetObjective {

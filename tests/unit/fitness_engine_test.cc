@@ -11,6 +11,7 @@
 
 #include "core/fitness/path_objective_terms.h"
 #include "core/fitness/reference_objective.h"
+#include "core/geometry/collision.h"
 #include "core/geometry/primitives.h"
 #include "core/geometry/rasterize.h"
 #include "core/map/generate.h"
@@ -363,6 +364,63 @@ TEST(FleetObjectiveTest, ClearanceIsContinuousAndWorksOnGrids) {
     previous = f;
   }
   EXPECT_LT(largest, 5e-3);
+}
+
+// The component labels of a grid are read per cell, so a path may cross only cells that are
+// farther than the hard clearance from every blocked cell while it passes closer than that to
+// one of them. Feasibility must still be the collision checker's verdict on the decoded path.
+TEST(FleetObjectiveTest, FeasibleIsTheCollisionCheckersVerdictOnGrids) {
+  for (const double resolution : {1.0, 0.5}) {
+    RandomGridOptions grid_options;
+    grid_options.width = 48;
+    grid_options.height = 48;
+    grid_options.obstacle_ratio = 0.03;
+    grid_options.resolution = resolution;
+    grid_options.keep_free = {{4, 4}, {43, 30}};
+    for (const double cells : {0.3, 0.5}) {
+      Problem problem;
+      problem.map = std::make_shared<Map>(*RandomGrid(grid_options, 5));
+      problem.start = {4.5 * resolution, 4.5 * resolution, 0};
+      problem.goal = {43.5 * resolution, 30.5 * resolution, 0};
+      problem.clearance = cells * resolution;
+      WaypointFitnessOptions options;
+      options.waypoints = 3;
+      options.fleet = FleetObjective{.preferred_clearance = 2.0 * problem.clearance};
+      FitnessEngine engine = *FitnessEngine::Create(problem, options);
+      const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*problem.map);
+      Rng rng(3);
+      int feasible = 0, infeasible = 0;
+      std::vector<Eigen::VectorXd> clear;
+      Eigen::VectorXd x(6);
+      Path path;
+      for (int trial = 0; trial < 3000; ++trial) {
+        if (trial % 2 == 1 && !clear.empty()) {
+          // A clear path moved a little: one that grazes the clearance.
+          x = clear[rng.UniformInt(0, static_cast<int64_t>(clear.size()) - 1)];
+          for (int d = 0; d < 6; ++d) x[d] += rng.Uniform(-0.4, 0.4) * resolution;
+        } else {
+          for (int i = 0; i < 3; ++i) {
+            const Point3 on = problem.start + (problem.goal - problem.start) * (i + 1) / 4.0;
+            x[i] = on.x() + rng.Uniform(-6.0, 6.0) * resolution;
+            x[3 + i] = on.y() + rng.Uniform(-6.0, 6.0) * resolution;
+          }
+        }
+        engine.Decode(x, path);
+        const bool free = checker->PathFree(path, problem.clearance);
+        ASSERT_EQ(engine.Evaluate(x).feasible, free)
+            << "resolution " << resolution << ", clearance " << problem.clearance << ", trial "
+            << trial;
+        if (free) {
+          ++feasible;
+          if (clear.size() < 200) clear.push_back(x);
+        } else {
+          ++infeasible;
+        }
+      }
+      EXPECT_GT(feasible, 100) << "clearance " << problem.clearance;
+      EXPECT_GT(infeasible, 100) << "clearance " << problem.clearance;
+    }
+  }
 }
 
 TEST(FleetObjectiveTest, RejectsBadWeights) {
