@@ -74,6 +74,12 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
     basis_ = std::make_shared<const InterpolationBasis>(options.interpolation,
                                                         options.knot_parameters, options.samples);
   }
+  if (fleet_) {
+    // A rounded path turns tighter than its radius only at corners without room for the curve,
+    // and no plan may return such a turn: it is priced as a violation.
+    curvature_weight_ = rounded_ ? std::max(fleet_->curvature_weight, fleet_->violation_weight)
+                                 : fleet_->curvature_weight;
+  }
   if (fleet_ && map_->grid() != nullptr) {
     grid_checker_ = std::make_shared<const GridCollisionChecker>(*map_->grid());
   }
@@ -276,7 +282,7 @@ double FitnessEngine::CurvatureTerm(const double* x, const double* y, const doub
     }
     excess += std::max(0.0, curvature - max_curvature) * 0.5 * (before + after);
   }
-  return f.curvature_weight * excess;
+  return curvature_weight_ * excess;
 }
 
 FleetTerms FitnessEngine::PathTerms(const Path& path) {

@@ -99,6 +99,8 @@ class FitnessEngine {
   double penalty_;
   std::optional<FleetObjective> fleet_;
   double hard_clearance_;
+  // The fleet's curvature weight, or with rounded corners its violation weight when larger.
+  double curvature_weight_ = 0.0;
   std::shared_ptr<const InterpolationBasis> basis_;   // unless rounded_
   std::shared_ptr<const RoundedCornerPath> rounded_;  // when rounded_corner_radius > 0
   // The knots start, waypoints, goal per coordinate, and the basis's scratch.

@@ -128,31 +128,42 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   }
   const std::unique_ptr<const CollisionChecker> checker = MakeCollisionChecker(*problem.map);
   const double cell = FieldCell(*problem.map);
-  // With a turning radius, where the bounded-curvature smoothing of a seed keeps the radius, the
-  // control points sit on the lines whose corners it rounded, and the seed's engine rounds their
-  // corners in the same way (RoundedCornerPath): with every offset 0 the path is the smoothed
-  // seed, and each path the swarm finds that turns no tighter than the radius is one the
-  // smoothing keeps as it is. Elsewhere the control points sit on the seed and a spline joins
-  // them.
+  // The search spaces ("entries"), one or two per seed. With a turning radius, where the
+  // bounded-curvature smoothing of a seed is clear, the control points sit on the lines whose
+  // corners it rounded, and the entry's engine rounds their corners in the same way
+  // (RoundedCornerPath): with every offset 0 the path is the smoothed seed, and each path the
+  // swarm finds that turns no tighter than the radius is one the smoothing keeps as it is.
+  // Elsewhere the control points sit on the seed and a spline joins them; a seed whose smoothing
+  // has corners without room for the radius gets both entries, the rounded one for polygons
+  // whose corners find room, the spline for curves that leave the seed's corners.
   const double radius = options.fleet ? options.fleet->turning_radius : 0.0;
+  std::vector<int> entry_seed;
   std::vector<Path> bases;
   std::vector<bool> rounded;
-  std::vector<std::optional<Path>> smoothed;  // each seed after the smoothing, if it is clear
-  for (const SeedPath& seed : seeds) {
-    bases.push_back(seed.path);
-    rounded.push_back(false);
-    smoothed.emplace_back();
-    if (radius <= 0) continue;
+  std::vector<std::optional<Path>> smoothed;  // the seed after the smoothing, if it is clear
+  for (size_t j = 0; j < seeds.size(); ++j) {
+    auto add = [&](Path base, bool is_rounded, std::optional<Path> smoothed_seed) {
+      entry_seed.push_back(static_cast<int>(j));
+      bases.push_back(std::move(base));
+      rounded.push_back(is_rounded);
+      smoothed.push_back(std::move(smoothed_seed));
+    };
+    if (radius <= 0) {
+      add(seeds[j].path, false, std::nullopt);
+      continue;
+    }
     BoundedCurvatureOptions smoothing;
     smoothing.turning_radius = radius;
     smoothing.clearance = problem.clearance;
-    BoundedCurvatureResult result = SmoothToTurningRadius(seed.path, smoothing, *checker);
-    if (!result.collision_free) continue;
-    smoothed.back() = std::move(result.path);
-    if (result.corners_over == 0 && result.corner_polygon.size() >= 2) {
-      bases.back() = std::move(result.corner_polygon);
-      rounded.back() = true;
+    BoundedCurvatureResult result = SmoothToTurningRadius(seeds[j].path, smoothing, *checker);
+    if (!result.collision_free) {
+      add(seeds[j].path, false, std::nullopt);
+      continue;
     }
+    if (result.corners_over > 0 || result.corner_polygon.size() < 2) {
+      add(seeds[j].path, false, result.path);
+    }
+    if (result.corner_polygon.size() >= 2) add(result.corner_polygon, true, std::nullopt);
   }
   // One control point per interior vertex and per segment, the same count for every seed.
   int k = 1;
@@ -202,11 +213,11 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   // the field every half cell along a path half again as long as the seed.
   std::vector<FitnessEngine> engines;
   std::vector<WaypointFitnessOptions> seed_options;
-  for (size_t j = 0; j < seeds.size(); ++j) {
+  for (size_t j = 0; j < bases.size(); ++j) {
     WaypointFitnessOptions o = options;
     o.waypoints = static_cast<int>(corridors[j].size());
     const int wanted = static_cast<int>(std::min<double>(
-        kMaxPoints, std::ceil(1.5 * seeds[j].length / (kPointSpacingCells * cell))));
+        kMaxPoints, std::ceil(1.5 * seeds[entry_seed[j]].length / (kPointSpacingCells * cell))));
     o.samples = std::max(options.samples, wanted);
     o.knot_parameters = parameters[j];
     if (rounded[j]) o.rounded_corner_radius = radius;
@@ -218,8 +229,10 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
 
   std::unique_ptr<SeededWaypointObjective> objective(
       new SeededWaypointObjective(k, std::move(corridors), std::move(engines)));
+  objective->entry_seed_ = entry_seed;
+  objective->seed_count_ = static_cast<int>(seeds.size());
   objective->away_ = std::max(cell, options.fleet ? options.fleet->preferred_clearance : 0.0);
-  for (size_t j = 0; j < seeds.size(); ++j) {
+  for (size_t j = 0; j < bases.size(); ++j) {
     if (smoothed[j] && !rounded[j]) objective->FitSmoothedSeed(static_cast<int>(j), *smoothed[j]);
   }
 
@@ -228,7 +241,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
   objective->guesses_ = objective->BuildGuesses();
   const std::vector<Eigen::VectorXd>& guesses = objective->guesses_;
   Eigen::VectorXd waypoints(2 * k);
-  for (size_t j = 0; j < seeds.size(); ++j) {
+  for (size_t j = 0; j < bases.size(); ++j) {
     objective->Waypoints(guesses[j].data(), waypoints.data());
     Evaluation e;
     if (rounded[j]) {
@@ -240,7 +253,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
       if (!polyline_engine.ok()) return polyline_engine.status();
       e = polyline_engine->Evaluate(waypoints);
     }
-    objective->seed_paths_.push_back(KnownPath{seeds[j].path, e.fitness});
+    objective->seed_paths_.push_back(KnownPath{seeds[entry_seed[j]].path, e.fitness});
     if (e.fitness < objective->seed_paths_[objective->best_seed_].fitness) {
       objective->best_seed_ = static_cast<int>(j);
     }
@@ -264,7 +277,19 @@ int SeededWaypointObjective::SeedIndex(double selector) const {
   return std::clamp(static_cast<int>(std::floor(selector)), 0, last);
 }
 
-int SeededWaypointObjective::CorridorOf(const Eigen::VectorXd& x) const { return SeedIndex(x[0]); }
+int SeededWaypointObjective::CorridorOf(const Eigen::VectorXd& x) const {
+  return entry_seed_[SeedIndex(x[0])];
+}
+
+std::optional<PathObjective::KnownPath> SeededWaypointObjective::KnownPathIn(int corridor) {
+  std::optional<KnownPath> best;
+  for (size_t j = 0; j < seed_paths_.size(); ++j) {
+    if (entry_seed_[j] == corridor && (!best || seed_paths_[j].fitness < best->fitness)) {
+      best = seed_paths_[j];
+    }
+  }
+  return best;
+}
 
 void SeededWaypointObjective::Waypoints(const double* x, double* waypoints) const {
   const std::vector<ControlPoint>& points = corridors_[SeedIndex(x[0])];

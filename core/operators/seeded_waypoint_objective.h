@@ -16,25 +16,28 @@
 namespace swarmplan {
 
 // The waypoint path problem on seed paths (FindSeedPaths): a decision vector
-// [s, u1..uk, v1..vk] picks seed floor(s) (s in [0, K)) and moves each of its k control points
-// along the seed by u_i (in [-1, 1], times half the distance to the nearer neighbouring control
-// point) and across it by v_i (in [-1, 1], times the free extent of its corridor on that side,
-// CorridorSection). The control points of a seed are the interior vertices and the midpoints of
-// the segments of its base polyline, in order (more midpoints on the longest gaps when another
-// seed has more, evenly thinned beyond `max_control_points`; a seed whose corners are rounded
-// has its own count, no midpoint inside a curve, and leaves the decision vector's other offsets
-// unused). The moved points are the
-// waypoints [x1..xk, y1..yk] of the seed's FitnessEngine, which joins and evaluates them as for
+// [s, u1..uk, v1..vk] picks search space floor(s) (s in [0, E), one or two spaces per seed) and
+// moves each of its k control points along its base by u_i (in [-1, 1], times half the distance
+// to the nearer neighbouring control point) and across it by v_i (in [-1, 1], times the free
+// extent of the corridor on that side, CorridorSection). The control points of a space are the
+// interior vertices and the midpoints of the segments of its base polyline, in order (more
+// midpoints on the longest gaps when another space has more, evenly thinned beyond
+// `max_control_points`; a space whose corners are rounded has its own count, no midpoint inside
+// a curve, and leaves the decision vector's other offsets unused). The moved points are the
+// waypoints [x1..xk, y1..yk] of the space's FitnessEngine, which joins and evaluates them as for
 // every waypoint planner:
-// - with a turning radius, where the bounded-curvature smoothing of the seed keeps the radius,
-//   the base is the polygon whose corners the smoothing rounded (corner_polygon) and the engine
-//   rounds the corners of the moved points in the same way (RoundedCornerPath): with every
-//   offset 0 the path is the smoothed seed, and a path that turns within the radius is one the
-//   smoothing keeps as it is, so the swarm searches the paths the plan returns;
-// - otherwise the base is the seed and the engine's spline has a centripetal parameter (steps
+// - with a turning radius, where the bounded-curvature smoothing of the seed is clear, the base
+//   is the polygon whose corners the smoothing rounded (corner_polygon) and the engine rounds
+//   the corners of the moved points in the same way (RoundedCornerPath): with every offset 0
+//   the path is the smoothed seed, and a path that turns within the radius is one the smoothing
+//   keeps as it is, so the swarm searches the paths the plan returns; a corner without room for
+//   the radius is priced as a violation;
+// - otherwise, and also where that smoothing has corners without room (whose seed then has both
+//   spaces), the base is the seed and the engine's spline has a centripetal parameter (steps
 //   the square root of the arc length between the control points along the seed), so it neither
 //   overshoots between unevenly spaced control points nor loops where close ones move apart.
-// The search space grows with the seeds' turns, not with the map.
+// The spaces of one seed share its corridor (CorridorOf, KnownPathIn). The search space grows
+// with the seeds' turns, not with the map.
 class SeededWaypointObjective final : public PathObjective {
  public:
   static absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> Create(
@@ -47,27 +50,24 @@ class SeededWaypointObjective final : public PathObjective {
   Evaluation Evaluate(const Eigen::VectorXd& x) override;
   void EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) override;
   Path Decode(const Eigen::VectorXd& x) override;
-  // The seeds themselves (selector at the middle of each seed's interval, every offset 0), then
-  // each seed with its control points moved toward the middle of their corridor sections by at
-  // most a = max(preferred clearance, a field cell), a / 4 and a / 16 (a seed that grazes the
-  // walls at the hard clearance has no feasible neighbour along most directions; these do), then
-  // each spline seed after the bounded-curvature smoothing (its control points moved across to
-  // where the smoothed path crosses their sections).
+  // Each space's base itself (selector at the middle of its interval, every offset 0), then
+  // each with its control points moved toward the middle of their corridor sections by at most
+  // a = max(preferred clearance, a field cell), a / 4 and a / 16 (a seed that grazes the walls
+  // at the hard clearance has no feasible neighbour along most directions; these do), then each
+  // spline space's seed after the bounded-curvature smoothing (its control points moved across
+  // to where the smoothed path crosses their sections).
   std::vector<Eigen::VectorXd> InitialGuesses() const override { return guesses_; }
   // One of the initial guesses with each offset moved by up to a scale drawn log-uniformly from
   // 1/256 to 1 of its range: the rest of the population spread around the seeds, most of it in
   // the feasible neighbourhood of a seed that grazes the walls.
   bool SampleNearGuesses(Rng& rng, Eigen::VectorXd& x) const override;
   std::optional<KnownPath> BestKnownPath() override { return seed_paths_[best_seed_]; }
-  int Corridors() const override { return static_cast<int>(corridors_.size()); }
+  int Corridors() const override { return seed_count_; }
   int CorridorOf(const Eigen::VectorXd& x) const override;
-  int BestKnownCorridor() const override { return best_seed_; }
-  std::optional<KnownPath> KnownPathIn(int corridor) override { return seed_paths_[corridor]; }
+  int BestKnownCorridor() const override { return entry_seed_[best_seed_]; }
+  std::optional<KnownPath> KnownPathIn(int corridor) override;
 
   int control_points() const { return k_; }
-  int seeds() const { return static_cast<int>(corridors_.size()); }
-  // The engine that evaluates the paths of seed j's corridor.
-  FitnessEngine& engine(int j) { return engines_[j]; }
   // The engine's waypoint vector [x1..xk, y1..yk] for a decision vector.
   void Waypoints(const double* x, double* waypoints) const;
 
@@ -87,12 +87,16 @@ class SeededWaypointObjective final : public PathObjective {
   int SeedIndex(double selector) const;
 
   int k_;
-  std::vector<std::vector<ControlPoint>> corridors_;  // per seed, k control points
-  std::vector<FitnessEngine> engines_;                // per seed
-  // Each seed and its fitness by the same engines: as the polyline it is or, where its engine
-  // rounds the corners, as the smoothed seed (every offset 0).
+  // Per search space (entry; one or two per seed), its control points and its engine; the
+  // selector s picks an entry.
+  std::vector<std::vector<ControlPoint>> corridors_;
+  std::vector<FitnessEngine> engines_;
+  std::vector<int> entry_seed_;  // the seed (corridor) of each entry
+  int seed_count_ = 0;
+  // Each entry's seed and its fitness by the entry's engine: as the polyline it is or, where the
+  // engine rounds the corners, as the smoothed seed (every offset 0).
   std::vector<KnownPath> seed_paths_;
-  int best_seed_ = 0;
+  int best_seed_ = 0;  // the entry with the best seed fitness
   double away_ = 0.0;  // the largest move off the walls of the guesses (a)
   std::vector<Eigen::VectorXd> smoothed_guesses_;
   std::vector<Eigen::VectorXd> guesses_;  // BuildGuesses, once the objective is built

@@ -1,14 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/fitness/path_objective_terms.h"
+#include "core/map/io/map_io.h"
 #include "core/registry.h"
 #include "core/run.h"
 #include "tests/unit/seed_test_maps.h"
+#include "tests/unit/test_support.h"
 
 namespace swarmplan {
 namespace {
@@ -126,6 +129,45 @@ TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASmoothedSeedThatKeepsTheRadius) {
       EXPECT_GE(seed_testing::Clearance(*request.problem.map, path), 0.5 - 1e-9);
       EXPECT_LE(contract::LargestMengerCurvature(path), 0.5 + 1e-6);
     }
+  }
+}
+
+// On den312d, problem 48 of its .scen file ends in a passage one cell wide, which the path
+// enters from a diagonal: the smoothing of the exact path has no room there for a turning
+// radius of 2 and turns tighter. The swarm also moves the corners of that smoothed seed, which
+// the engine rounds, and finds a polygon whose corners have room.
+TEST(PlanObjectiveTest, ASwarmFindsCornersWithRoomWhereTheSmoothedSeedHasNone) {
+  SWARMPLAN_REQUIRE_BENCHMARKS("movingai/den312d.map");
+  const std::string file = ::swarmplan::testing::BenchmarksDir() + "/movingai/den312d.map";
+  absl::StatusOr<Map> loaded = LoadMapFile(file);
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  absl::StatusOr<std::vector<Scenario>> scenarios = LoadScenarioFile(file + ".scen");
+  ASSERT_TRUE(scenarios.ok()) << scenarios.status();
+  const MapPtr map = std::make_shared<const Map>(*std::move(loaded));
+  const Scenario& problem = scenarios->at(48);
+  PlanRequest exact = FleetRequest("exact-any-angle", 1);
+  exact.problem.map = map;
+  const Point2 start = map->grid()->CellCenter(problem.start);
+  const Point2 goal = map->grid()->CellCenter(problem.goal);
+  exact.problem.start = {start.x(), start.y(), 0};
+  exact.problem.goal = {goal.x(), goal.y(), 0};
+  NullObserver observer;
+  absl::StatusOr<PlanResult> smoothed_exact = RunPlan(DefaultRegistry(), exact, {}, observer);
+  ASSERT_TRUE(smoothed_exact.ok()) << smoothed_exact.status();
+  EXPECT_GT(contract::LargestMengerCurvature(smoothed_exact->smoothed_path), 0.6);
+  for (const std::string algorithm : {"aem-bso", "pso"}) {
+    SCOPED_TRACE(algorithm);
+    PlanRequest request = exact;
+    request.algorithm = algorithm;
+    request.problem.limits.max_iterations = 200;
+    PlanResult result;
+    ASSERT_NO_FATAL_FAILURE(PlanWithObjectives(request, result));
+    EXPECT_LT(result.objective->Total(), result.seed_objective->Total());
+    const Path& path = result.smoothed_path;
+    EXPECT_EQ(path.front(), request.problem.start);
+    EXPECT_EQ(path.back(), request.problem.goal);
+    EXPECT_GE(seed_testing::Clearance(*map, path), 0.5 - 1e-9);
+    EXPECT_LE(contract::LargestMengerCurvature(path), 0.5 + 1e-6);
   }
 }
 
