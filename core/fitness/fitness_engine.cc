@@ -77,8 +77,9 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
   if (fleet_) {
     // A rounded path turns tighter than its radius only at corners without room for the curve,
     // and no plan may return such a turn: it is priced as a violation.
-    curvature_weight_ = rounded_ ? std::max(fleet_->curvature_weight, fleet_->violation_weight)
-                                 : fleet_->curvature_weight;
+    curvature_weight_ = rounded_ || options.curvature_as_violation
+                            ? std::max(fleet_->curvature_weight, fleet_->violation_weight)
+                            : fleet_->curvature_weight;
   }
   if (fleet_ && map_->grid() != nullptr) {
     grid_checker_ = std::make_shared<const GridCollisionChecker>(*map_->grid());

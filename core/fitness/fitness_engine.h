@@ -31,6 +31,9 @@ struct WaypointFitnessOptions {
   // > 0 (world units): the knots are the corners of a RoundedCornerPath turning no tighter than
   // this, instead of the interpolation; `samples` then bounds its straight parts' points.
   double rounded_corner_radius = 0.0;
+  // Price curvature above 1 / turning radius with the violation weight when larger: for
+  // searches whose result must turn within the radius.
+  bool curvature_as_violation = false;
 };
 
 // The fitness of 2D waypoint paths, shared by every waypoint planner. A decision vector

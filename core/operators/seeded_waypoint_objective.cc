@@ -221,6 +221,7 @@ absl::StatusOr<std::unique_ptr<SeededWaypointObjective>> SeededWaypointObjective
     o.samples = std::max(options.samples, wanted);
     o.knot_parameters = parameters[j];
     if (rounded[j]) o.rounded_corner_radius = radius;
+    o.curvature_as_violation = radius > 0;
     absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, o);
     if (!engine.ok()) return engine.status();
     engines.push_back(*std::move(engine));
