@@ -75,9 +75,7 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
                                                         options.knot_parameters, options.samples);
   }
   if (fleet_) {
-    // A rounded path turns tighter than its radius only at corners without room for the curve,
-    // and no plan may return such a turn: it is priced as a violation.
-    curvature_weight_ = rounded_ || options.curvature_as_violation
+    curvature_weight_ = options.curvature_as_violation
                             ? std::max(fleet_->curvature_weight, fleet_->violation_weight)
                             : fleet_->curvature_weight;
   }

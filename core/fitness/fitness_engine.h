@@ -102,7 +102,8 @@ class FitnessEngine {
   double penalty_;
   std::optional<FleetObjective> fleet_;
   double hard_clearance_;
-  // The fleet's curvature weight, or with rounded corners its violation weight when larger.
+  // The fleet's curvature weight, or with curvature_as_violation its violation weight when
+  // larger.
   double curvature_weight_ = 0.0;
   std::shared_ptr<const InterpolationBasis> basis_;   // unless rounded_
   std::shared_ptr<const RoundedCornerPath> rounded_;  // when rounded_corner_radius > 0

@@ -30,13 +30,14 @@ namespace swarmplan {
 //   is the polygon whose corners the smoothing rounded (corner_polygon) and the engine rounds
 //   the corners of the moved points in the same way (RoundedCornerPath): with every offset 0
 //   the path is the smoothed seed, and a path that turns within the radius is one the smoothing
-//   keeps as it is, so the swarm searches the paths the plan returns; a corner without room for
-//   the radius is priced as a violation;
+//   keeps as it is, so the swarm searches the paths the plan returns;
 // - otherwise, and also where that smoothing has corners without room (whose seed then has both
 //   spaces), the base is the seed and the engine's spline has a centripetal parameter (steps
 //   the square root of the arc length between the control points along the seed), so it neither
 //   overshoots between unevenly spaced control points nor loops where close ones move apart.
-// The spaces of one seed share its corridor (CorridorOf, KnownPathIn). The search space grows
+// With a turning radius, every space prices curvature above 1 / radius as a violation
+// (curvature_as_violation): no plan may return such a turn. The spaces of one seed share its
+// corridor (CorridorOf, KnownPathIn). The search space grows
 // with the seeds' turns, not with the map.
 class SeededWaypointObjective final : public PathObjective {
  public:
