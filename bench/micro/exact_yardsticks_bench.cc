@@ -154,7 +154,7 @@ const bool registered = [] {
                                  [path](benchmark::State& s) { RunYardstick(s, path); })
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
-    for (const double clearance : {0.0, 1.0}) {
+    for (const double clearance : {0.0, 1.0, 1.5}) {
       benchmark::RegisterBenchmark(
           ("AnyAngleGridBuild/" + name + "/clearance:" + std::to_string(clearance)).c_str(),
           [path, clearance](benchmark::State& s) { RunGridBuild(s, path, clearance); })

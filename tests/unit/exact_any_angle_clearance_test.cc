@@ -126,6 +126,82 @@ TEST(ExactAnyAngleClearanceTest, SubCellGridsKeepTheirDefinitions) {
   }
 }
 
+// Each sub-cell against every blocked square, with distances between boxes in world units: the
+// upper grid blocks a sub-cell whose square comes closer than the clearance to a blocked square,
+// the lower grid one inside a blocked square or whose centre lies closer than the clearance less
+// half a sub-cell diagonal. Grids with clusters (enclosed cells), unknown cells, cells at the
+// edges, two resolutions and an origin off zero.
+TEST(ExactAnyAngleClearanceTest, SubCellGridsMatchTheirDefinitionsCellByCell) {
+  std::mt19937_64 rng(17);
+  for (const double resolution : {1.0, 0.5}) {
+    const int width = 23, height = 17;
+    std::vector<int8_t> cells(static_cast<size_t>(width) * height, OccupancyGrid::kFree);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const bool cluster = x >= 8 && x < 13 && y >= 5 && y < 9;
+        const double r = u(rng);
+        int8_t& c = cells[static_cast<size_t>(y) * width + x];
+        if (cluster || r < 0.08) c = OccupancyGrid::kOccupied;
+        if (r > 0.97) c = OccupancyGrid::kUnknown;
+      }
+    }
+    const OccupancyGrid grid =
+        *OccupancyGrid::Create(width, height, cells, resolution, Point2(-3.0, 2.0));
+    for (const double clearance : {0.1, 0.3, 0.55, 1.2, 2.3}) {
+      for (const ClearanceBound bound : {ClearanceBound::kUpper, ClearanceBound::kLower}) {
+        SCOPED_TRACE(::testing::Message()
+                     << "resolution " << resolution << " clearance " << clearance
+                     << (bound == ClearanceBound::kUpper ? " upper" : " lower"));
+        const OccupancyGrid sub = ClearanceGrid(grid, clearance, bound);
+        const int s = ClearanceSubdivision(grid);
+        ASSERT_EQ(sub.width(), width * s);
+        ASSERT_EQ(sub.height(), height * s);
+        const double h = resolution / s;
+        int blocked_near = 0, mismatches = 0;
+        for (int sy = 0; sy < sub.height(); ++sy) {
+          for (int sx = 0; sx < sub.width(); ++sx) {
+            bool expected = false;
+            for (int y = 0; y < height && !expected; ++y) {
+              for (int x = 0; x < width && !expected; ++x) {
+                if (!grid.IsBlocked(x, y)) continue;
+                // Gaps between the sub-cell (or its centre) and the blocked square, per axis.
+                const auto gap = [](double lo, double hi, double a, double b) {
+                  return std::max({0.0, a - hi, lo - b});
+                };
+                const double ax = x * resolution, ay = y * resolution;
+                const double bx = ax + resolution, by = ay + resolution;
+                if (bound == ClearanceBound::kUpper) {
+                  const double gx = gap(sx * h, (sx + 1) * h, ax, bx);
+                  const double gy = gap(sy * h, (sy + 1) * h, ay, by);
+                  expected = std::hypot(gx, gy) < clearance;
+                } else {
+                  const double cx = (sx + 0.5) * h, cy = (sy + 0.5) * h;
+                  const double gx = gap(cx, cx, ax, bx), gy = gap(cy, cy, ay, by);
+                  const double reach = clearance - h * std::numbers::sqrt2 / 2;
+                  expected = (gx == 0 && gy == 0) || std::hypot(gx, gy) < reach;
+                }
+              }
+            }
+            if (sub.IsBlocked(sx, sy) != expected && ++mismatches <= 5) {
+              ADD_FAILURE() << "sub-cell " << sx << "," << sy << " blocked "
+                            << sub.IsBlocked(sx, sy) << ", expected " << expected;
+            }
+            const bool inside = grid.IsBlocked(sx / s, sy / s);
+            blocked_near += expected && !inside ? 1 : 0;
+          }
+        }
+        EXPECT_EQ(mismatches, 0);
+        // The lower grid blocks sub-cells outside the obstacles once the clearance less half a
+        // sub-cell diagonal reaches the nearest centres.
+        if (bound == ClearanceBound::kUpper || clearance > h * (0.5 + std::numbers::sqrt2 / 2)) {
+          EXPECT_GT(blocked_near, 0);
+        }
+      }
+    }
+  }
+}
+
 // On random grids: lower bound <= path returned, lower bound <= theta-star's length (a path
 // that keeps the clearance), and the path returned keeps the clearance and joins the ends.
 TEST(ExactAnyAngleClearanceTest, BoundsBracketThetaStarOnRandomGrids) {
