@@ -32,13 +32,23 @@ struct IterationSummary {
   double mean_fitness = 0.0;  // of the population in this iteration
 };
 
+// One iteration, as the loop hands it to a search.
+struct Iteration {
+  int t = 0;  // 0-based
+  // t on the scale of the schedules that run over t_max iterations (inertia weights, the elite
+  // mutation): t itself, unless the stop token's deadline is expected to end the search before
+  // t_max; then the schedules run over the iterations expected to fit at the pace so far, so the
+  // search reaches their end (small steps about its best) before its time is up.
+  int schedule_t = 0;
+};
+
 // The iteration count a planner plans with: its own parameter, lowered by the problem's cap.
 int PlannedIterations(int param, const Limits& limits);
 
-// Runs `iterate(t)` for t = 0, 1, ... until `t_max` iterations are done or the stop token says
+// Runs `iterate` for t = 0, 1, ... until `t_max` iterations are done or the stop token says
 // stop (checked before every iteration). After each iteration it records the best so far from
 // `outcome` (which `iterate` keeps up to date), keeps it non-increasing, and calls the observer.
 void RunIterations(int t_max, const StopToken& stop, Observer& observer, SearchOutcome& outcome,
-                   const std::function<IterationSummary(int)>& iterate);
+                   const std::function<IterationSummary(const Iteration&)>& iterate);
 
 }  // namespace swarmplan

@@ -106,7 +106,7 @@ SearchOutcome RunBeetleAntennae(Objective& objective, const BeetleAntennaeOption
     }
   };
 
-  RunIterations(t_max, stop, observer, out, [&](int) {
+  RunIterations(t_max, stop, observer, out, [&](const Iteration&) {
     double sum = 0.0;
     for (int j = 0; j < n; ++j) {
       b1 = rng.UnitDirection(dim);

@@ -122,7 +122,7 @@ Eigen::VectorXd TerrainAco::Generation(Rng& rng, Evaluation& best, double& mean,
 SearchOutcome TerrainAco::Run(int t_max, Rng& rng, const StopToken& stop, Observer& observer) {
   SearchOutcome out;
   out.best_fitness = std::numeric_limits<double>::infinity();
-  RunIterations(t_max, stop, observer, out, [&](int) {
+  RunIterations(t_max, stop, observer, out, [&](const Iteration&) {
     Evaluation best;
     double mean = 0.0;
     Eigen::VectorXd x = Generation(rng, best, mean, out.evaluations);

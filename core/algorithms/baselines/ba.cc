@@ -33,7 +33,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
   out.evaluations = n;
 
   Eigen::VectorXd candidate(dim);
-  RunIterations(t_max, stop, observer, out, [&](int t) {
+  RunIterations(t_max, stop, observer, out, [&](const Iteration& iteration) {
     double mean_loudness = 0.0;
     for (double a : loudness) mean_loudness += a;
     mean_loudness /= std::max(n, 1);
@@ -55,7 +55,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
         x[i] = candidate;
         f[i] = e.fitness;
         loudness[i] *= options.alpha;
-        pulse_rate[i] = options.pulse_rate0 * (1.0 - std::exp(-options.gamma * t));
+        pulse_rate[i] = options.pulse_rate0 * (1.0 - std::exp(-options.gamma * iteration.t));
       }
       if (e.fitness <= out.best_fitness) {
         out.best_fitness = e.fitness;

@@ -51,7 +51,8 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
   out.evaluations = n;
 
   Eigen::VectorXd b(dim), vb(dim), scratch(dim), mutant(dim);
-  RunIterations(t_max, stop, observer, out, [&](int t) {
+  RunIterations(t_max, stop, observer, out, [&](const Iteration& iteration) {
+    const int t = iteration.schedule_t;
     const double w = InertiaWeight(options.inertia, options.w_max, options.w_min, t, t_max);
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
