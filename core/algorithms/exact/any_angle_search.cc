@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <utility>
 
@@ -38,6 +39,41 @@ struct QueueEntry {
     return g < o.g;
   }
 };
+
+// The lattice points x >= `from` of a cell row where it changes between blocked and free (cells
+// x - 1 and x differ; outside the grid is blocked): its runs' ends, in increasing order. A convex
+// corner (one blocked cell of four) can lie only at a change of one of its two rows.
+class RowChanges {
+ public:
+  RowChanges(const AnyAngleGrid& grid, int row, int from)
+      : run_(std::lower_bound(grid.RunsBegin(row), grid.RunsEnd(row), from,
+                              [](const AnyAngleGrid::Run& run, int x) { return run.end < x; })),
+        end_(grid.RunsEnd(row)) {
+    if (Peek() < from) Next();
+  }
+  // The next change, or INT_MAX past the last.
+  int Peek() const {
+    if (run_ == end_) return std::numeric_limits<int>::max();
+    return at_begin_ ? run_->begin : run_->end;
+  }
+  void Next() {
+    if (!at_begin_) ++run_;
+    at_begin_ = !at_begin_;
+  }
+
+ private:
+  const AnyAngleGrid::Run* run_;
+  const AnyAngleGrid::Run* end_;
+  bool at_begin_ = true;
+};
+
+// The next change of either row (each taken once), or INT_MAX past the last.
+int NextChange(RowChanges& a, RowChanges& b) {
+  const int x = std::min(a.Peek(), b.Peek());
+  if (a.Peek() == x) a.Next();
+  if (b.Peek() == x) b.Next();
+  return x;
+}
 
 class Search {
  public:
@@ -245,7 +281,9 @@ class Search {
     const double y = ys_[j];
     const int x_first = static_cast<int>(std::ceil(n.a - kTol));
     const int x_last = static_cast<int>(std::floor(n.b + kTol));
-    for (int x0 = x_first; x0 <= x_last; ++x0) {
+    RowChanges changes_beyond(grid_, beyond, x_first), changes_behind(grid_, behind, x_first);
+    for (int x0 = NextChange(changes_beyond, changes_behind); x0 <= x_last;
+         x0 = NextChange(changes_beyond, changes_behind)) {
       const bool ul = !Free(x0 - 1, beyond), ur = !Free(x0, beyond);
       const bool dl = !Free(x0 - 1, behind), dr = !Free(x0, behind);
       if (ul + ur + dl + dr != 1) continue;
@@ -287,7 +325,9 @@ class Search {
     const bool rightward = n.b > r.p.x();
     const int x_first = static_cast<int>(std::ceil(n.a - kTol));
     const int x_last = static_cast<int>(std::floor(n.b + kTol));
-    for (int x0 = x_first; x0 <= x_last; ++x0) {
+    RowChanges changes_up(grid_, up_[j], x_first), changes_down(grid_, down_[j], x_first);
+    for (int x0 = NextChange(changes_up, changes_down); x0 <= x_last;
+         x0 = NextChange(changes_up, changes_down)) {
       if (x0 == r.p.x()) continue;
       const bool ul = !Free(x0 - 1, up_[j]), ur = !Free(x0, up_[j]);
       const bool dl = !Free(x0 - 1, down_[j]), dr = !Free(x0, down_[j]);
