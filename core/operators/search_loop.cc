@@ -14,17 +14,46 @@ int PlannedIterations(int param, const Limits& limits) {
 
 namespace {
 
-// The iterations a search is expected to complete by `deadline` after `done` of them took
-// `elapsed`, at most `t_max`.
-int ExpectedIterations(int t_max, int done, absl::Duration elapsed, absl::Time deadline) {
-  if (deadline == absl::InfiniteFuture() || done <= 0 || elapsed <= absl::ZeroDuration()) {
-    return t_max;
+// Where each iteration stands on the schedules (Iteration::schedule_t). They follow t until a
+// quarter of the search's time to the deadline has passed; from then on, while the iterations
+// expected to fit by the deadline (at the pace of the faster of the last iteration and their
+// mean) are fewer than 90 % of t_max, they run over those instead. A search that has time, even
+// one whose first iterations are slow, keeps its schedules as without a deadline.
+class ScheduleClock {
+ public:
+  ScheduleClock(int t_max, absl::Time start, absl::Time deadline)
+      : t_max_(t_max), start_(start), deadline_(deadline) {}
+
+  int At(int t) {
+    int at = t;
+    if (length_ < t_max_) {
+      at = static_cast<int>(
+          std::min<int64_t>(t_max_ - 1, static_cast<int64_t>(t) * t_max_ / std::max(length_, 1)));
+    }
+    // Never back: a schedule lengthened again waits at its place until t catches up.
+    schedule_t_ = std::max(schedule_t_, at);
+    return schedule_t_;
   }
-  const double per_iteration = absl::ToDoubleSeconds(elapsed) / done;
-  const double remaining = std::max(0.0, absl::ToDoubleSeconds(deadline - absl::Now()));
-  const double expected = done + std::floor(remaining / per_iteration);
-  return expected >= t_max ? t_max : std::max(done, static_cast<int>(expected));
-}
+
+  // After `done` iterations, `elapsed` since the search started.
+  void Done(int done, absl::Duration elapsed) {
+    const absl::Duration last = elapsed - previous_elapsed_;
+    previous_elapsed_ = elapsed;
+    if (deadline_ == absl::InfiniteFuture() || elapsed < (deadline_ - start_) / 4) return;
+    const double pace = absl::ToDoubleSeconds(std::min(elapsed / done, last));
+    if (pace <= 0) return;
+    const double remaining = std::max(0.0, absl::ToDoubleSeconds(deadline_ - absl::Now()));
+    const double expected = done + std::floor(remaining / pace);
+    length_ = expected >= 0.9 * t_max_ ? t_max_ : std::max(done, static_cast<int>(expected));
+  }
+
+ private:
+  const int t_max_;
+  const absl::Time start_, deadline_;
+  int length_ = t_max_;  // the schedules' length in iterations
+  int schedule_t_ = 0;
+  absl::Duration previous_elapsed_;
+};
 
 }  // namespace
 
@@ -32,9 +61,7 @@ void RunIterations(int t_max, const StopToken& stop, Observer& observer, SearchO
                    const std::function<IterationSummary(const Iteration&)>& iterate) {
   const absl::Time start = absl::Now();
   double logged_best = outcome.best_fitness;
-  // The schedules' length: t_max, shortened (never lengthened again) while the deadline is
-  // expected to come first.
-  int schedule_length = t_max;
+  ScheduleClock schedule(t_max, start, stop.deadline());
   for (int t = 0;; ++t) {
     StopReason reason = stop.Check(t);
     if (reason == StopReason::kNone && t >= t_max) reason = StopReason::kIterationCap;
@@ -44,11 +71,7 @@ void RunIterations(int t_max, const StopToken& stop, Observer& observer, SearchO
     }
     Iteration iteration;
     iteration.t = t;
-    iteration.schedule_t =
-        schedule_length == t_max
-            ? t
-            : static_cast<int>(std::min<int64_t>(
-                  t_max - 1, static_cast<int64_t>(t) * t_max / std::max(schedule_length, 1)));
+    iteration.schedule_t = schedule.At(t);
     const IterationSummary summary = iterate(iteration);
     if (t == 0 || outcome.best_fitness < logged_best) {
       if (t > 0) outcome.best_iteration = t;
@@ -64,8 +87,7 @@ void RunIterations(int t_max, const StopToken& stop, Observer& observer, SearchO
     outcome.convergence.push_back(stats);
     outcome.iterations = t + 1;
     observer.OnIteration(stats);
-    schedule_length =
-        std::min(schedule_length, ExpectedIterations(t_max, t + 1, stats.elapsed, stop.deadline()));
+    schedule.Done(t + 1, stats.elapsed);
   }
 }
 

@@ -36,9 +36,9 @@ struct IterationSummary {
 struct Iteration {
   int t = 0;  // 0-based
   // t on the scale of the schedules that run over t_max iterations (inertia weights, the elite
-  // mutation): t itself, unless the stop token's deadline is expected to end the search before
-  // t_max; then the schedules run over the iterations expected to fit at the pace so far, so the
-  // search reaches their end (small steps about its best) before its time is up.
+  // mutation): t itself, unless the stop token's deadline is expected to end the search well
+  // before t_max; then the schedules run over the iterations expected to fit, so the search
+  // reaches their end (small steps about its best) before its time is up. Never decreasing.
   int schedule_t = 0;
 };
 

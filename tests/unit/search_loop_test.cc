@@ -2,6 +2,7 @@
 // deadline.
 #include "core/operators/search_loop.h"
 
+#include <algorithm>
 #include <thread>
 #include <vector>
 
@@ -12,25 +13,30 @@
 namespace swarmplan {
 namespace {
 
-std::vector<Iteration> Iterations(int t_max, const StopToken& stop, absl::Duration pace) {
+// The iterations RunIterations hands out; each takes `pace` (the first `first_pace`).
+std::vector<Iteration> Iterations(int t_max, const StopToken& stop, absl::Duration pace,
+                                  absl::Duration first_pace = absl::ZeroDuration()) {
   std::vector<Iteration> seen;
   SearchOutcome outcome;
   NullObserver observer;
   RunIterations(t_max, stop, observer, outcome, [&](const Iteration& iteration) {
     seen.push_back(iteration);
-    if (pace > absl::ZeroDuration()) std::this_thread::sleep_for(absl::ToChronoNanoseconds(pace));
+    const absl::Duration wait = iteration.t == 0 ? std::max(pace, first_pace) : pace;
+    if (wait > absl::ZeroDuration()) std::this_thread::sleep_for(absl::ToChronoNanoseconds(wait));
     return IterationSummary{};
   });
   EXPECT_EQ(outcome.iterations, static_cast<int>(seen.size()));
   return seen;
 }
 
-// Without a deadline, or with one that leaves time for every iteration, the schedules follow
-// the iteration count: the same seed gives the same search.
+// Without a deadline, or with one that leaves time for every iteration (even after a first
+// iteration slow enough that its pace alone would not), the schedules follow the iteration
+// count: the same seed gives the same search.
 TEST(SearchLoopTest, SchedulesFollowTheIterationsWhenTheDeadlineLeavesRoom) {
-  for (const StopToken& stop :
-       {StopToken(), StopToken().WithDeadline(absl::Now() + absl::Hours(1))}) {
-    const std::vector<Iteration> seen = Iterations(200, stop, absl::ZeroDuration());
+  for (const StopToken& stop : {StopToken(), StopToken().WithDeadline(absl::Now() + absl::Hours(1)),
+                                StopToken().WithDeadline(absl::Now() + absl::Seconds(30))}) {
+    const std::vector<Iteration> seen =
+        Iterations(200, stop, absl::ZeroDuration(), absl::Milliseconds(300));
     ASSERT_EQ(seen.size(), 200u);
     for (int t = 0; t < 200; ++t) {
       EXPECT_EQ(seen[t].t, t);
