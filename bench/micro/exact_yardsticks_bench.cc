@@ -8,13 +8,13 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "bench/micro/fixtures.h"
 #include "core/algorithms/exact/any_angle_grid.h"
 #include "core/algorithms/exact/any_angle_search.h"
 #include "core/algorithms/exact/taut_path_offset.h"
@@ -27,11 +27,6 @@ namespace swarmplan::bench {
 namespace {
 
 constexpr size_t kScenariosPerMap = 20;
-
-std::string MovingAiDir() {
-  const char* dir = std::getenv("SWARMPLAN_MOVINGAI_DIR");
-  return dir != nullptr ? dir : "../shared/benchmarks/movingai";
-}
 
 // kScenariosPerMap scenarios spread evenly over the file (which runs from the shortest bucket
 // to the longest).

@@ -1,5 +1,6 @@
 #include "bench/micro/fixtures.h"
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -7,6 +8,11 @@
 #include "core/random.h"
 
 namespace swarmplan::bench {
+
+std::string MovingAiDir() {
+  const char* dir = std::getenv("SWARMPLAN_MOVINGAI_DIR");
+  return dir != nullptr ? dir : "../shared/benchmarks/movingai";
+}
 
 const Map& RandomGridMap(int size) {
   static auto* const maps = new std::map<int, std::unique_ptr<const Map>>();

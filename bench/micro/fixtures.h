@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,10 @@ T ValueOrDie(absl::StatusOr<T> value) {
   }
   return *std::move(value);
 }
+
+// The shared Moving AI maps' folder: $SWARMPLAN_MOVINGAI_DIR, default
+// ../shared/benchmarks/movingai (the benchmarks run from the repository's root).
+std::string MovingAiDir();
 
 // Maps shared by the micro-benchmarks (core/map/generate.h, seed 1), built once per process.
 

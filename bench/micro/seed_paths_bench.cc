@@ -7,23 +7,18 @@
 // when the folder is absent. Run: swarmplan-microbench --benchmark_filter=SeedPaths
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "bench/micro/fixtures.h"
 #include "core/map/io/map_io.h"
 #include "core/problem.h"
 #include "core/seeds/seed_paths.h"
 
 namespace swarmplan::bench {
 namespace {
-
-std::string MovingAiDir() {
-  const char* dir = std::getenv("SWARMPLAN_MOVINGAI_DIR");
-  return dir != nullptr ? dir : "../shared/benchmarks/movingai";
-}
 
 absl::StatusOr<Problem> LongestProblem(const std::string& map_path) {
   absl::StatusOr<Map> map = LoadMapFile(map_path);
