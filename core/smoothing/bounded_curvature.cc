@@ -21,6 +21,13 @@ constexpr double kTolerancesInRadii[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.6};
 constexpr int kClearanceRepairRounds = 32;
 // Halvings of a colliding corner's curve before it stays sharp.
 constexpr int kMaxShrinks = 8;
+// Vertex moves that make room for corners at most.
+constexpr int kRoomRounds = 64;
+// Where a vertex may move to make room, in radii: along its lines and on rings around it (also
+// the lengths of the straight pieces a vertex is split into).
+constexpr double kSlidesInRadii[] = {0.125, 0.25, 0.5, 1.0, 2.0};
+constexpr double kRingsInRadii[] = {0.25, 0.5, 1.0, 2.0};
+constexpr int kRingDirections = 16;
 
 double Cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -33,9 +40,14 @@ class CornerRounding {
         options_(options),
         checker_(checker) {}
 
-  BoundedCurvatureResult Run() {
+  // With `make_room`, vertices next to corners still short of the radius then move to where
+  // their corners fall less short (MoveOneVertexForRoom).
+  BoundedCurvatureResult Run(bool make_room) {
     for (int round = 0; round < kClearanceRepairRounds; ++round) {
       if (!MergeOneCrowdedPair() && !MoveOneCornerOut()) break;
+    }
+    for (int round = 0; make_room && round < kRoomRounds; ++round) {
+      if (!MoveOneVertexForRoom()) break;
     }
     return Assemble();
   }
@@ -112,6 +124,152 @@ class CornerRounding {
     return false;
   }
 
+  // Corner i's curve at distance d from its vertex, halved until it keeps the clearance; none
+  // when it still does not after kMaxShrinks halvings (the corner stays sharp).
+  std::optional<BezierCorner> ClearCorner(size_t i, double d) const {
+    BezierCorner corner = MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], d);
+    for (int shrinks = 0; !CurveFree(corner); ++shrinks) {
+      if (shrinks == kMaxShrinks) return std::nullopt;
+      corner = MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], 0.5 * corner.d);
+    }
+    return corner;
+  }
+
+  // How far a curve at distance d falls short of what corner i needs: 0 (room enough) to 1
+  // (sharp).
+  double Shortfall(size_t i, double d) const {
+    const double needed = Needed(i);
+    return needed > 0 ? std::max(0.0, 1.0 - d / needed) : 0.0;
+  }
+
+  // The distance of each corner's clear curve from its vertex (0 where it stays sharp), for
+  // the distances `fitted`.
+  std::vector<double> ClearDistances(const std::vector<double>& fitted) const {
+    std::vector<double> clear(corners());
+    for (size_t i = 0; i < corners(); ++i) {
+      const std::optional<BezierCorner> corner = ClearCorner(i, fitted[i]);
+      clear[i] = corner ? corner->d : 0.0;
+    }
+    return clear;
+  }
+
+  // What may replace vertex pts_[v]: the vertex moved along its two lines towards its
+  // neighbours or on rings around it, or split in two on either side of it along the mean of
+  // its lines' headings (a straight piece through a vertex that has no room beside it).
+  std::vector<std::vector<Point2>> Replacements(size_t v) const {
+    const double radius = options_.turning_radius;
+    const Point2 vertex = pts_[v];
+    std::vector<std::vector<Point2>> out;
+    for (const size_t neighbour : {v - 1, v + 1}) {
+      const Point2 line = pts_[neighbour] - vertex;
+      for (const double slide : kSlidesInRadii) {
+        if (slide * radius < line.norm()) {
+          out.push_back({vertex + slide * radius * line.normalized()});
+        }
+      }
+    }
+    for (const double ring : kRingsInRadii) {
+      for (int k = 0; k < kRingDirections; ++k) {
+        const double angle = 2.0 * M_PI * k / kRingDirections;
+        out.push_back({vertex + ring * radius * Point2(std::cos(angle), std::sin(angle))});
+      }
+    }
+    const Point2 heading =
+        (vertex - pts_[v - 1]).normalized() + (pts_[v + 1] - vertex).normalized();
+    if (heading.norm() > 1e-9) {
+      for (const double ring : kRingsInRadii) {
+        const Point2 half = 0.5 * ring * radius * heading.normalized();
+        out.push_back({vertex - half, vertex + half});
+      }
+    }
+    return out;
+  }
+
+  // Takes the first corner whose clear curve falls short of the radius and replaces the vertex
+  // of it or of a neighbouring corner (Replacements), keeping the lines clear, by what lowers the
+  // corners' summed shortfall the most (the shorter path among equals). Returns whether it
+  // replaced one.
+  bool MoveOneVertexForRoom() {
+    const std::vector<double> fitted = Fit();
+    const std::vector<double> clear = ClearDistances(fitted);
+    double current = 0.0;
+    for (size_t i = 0; i < corners(); ++i) current += Shortfall(i, clear[i]);
+    const double least_room = 1e-6 * options_.turning_radius;
+    const std::vector<Point2> original = pts_;
+    for (size_t i = 0; i < corners(); ++i) {
+      if (Shortfall(i, clear[i]) <= 0) continue;
+      bool found = false;
+      double best = 0.0, best_added = 0.0;
+      std::vector<Point2> best_pts;
+      // Better: a lower summed shortfall than now and than the best so far, or the same as the
+      // best so far on a shorter path.
+      auto better = [&](double score, double added, double slack) {
+        if (score >= current - 1e-9) return false;
+        return !found || score < best - slack || (score <= best + slack && added < best_added);
+      };
+      for (size_t c = i > 0 ? i - 1 : 0; c <= std::min(i + 1, corners() - 1); ++c) {
+        const size_t v = c + 1;
+        const double before =
+            (original[v] - original[v - 1]).norm() + (original[v + 1] - original[v]).norm();
+        for (const std::vector<Point2>& replacement : Replacements(v)) {
+          std::vector<Point2> chain = {original[v - 1]};
+          chain.insert(chain.end(), replacement.begin(), replacement.end());
+          chain.push_back(original[v + 1]);
+          double added = -before;
+          bool free = true;
+          for (size_t k = 0; free && k + 1 < chain.size(); ++k) {
+            const double line = (chain[k + 1] - chain[k]).norm();
+            added += line;
+            free = line >= least_room && Free(chain[k], chain[k + 1]);
+          }
+          if (!free) continue;
+          pts_.erase(pts_.begin() + static_cast<std::ptrdiff_t>(v));
+          pts_.insert(pts_.begin() + static_cast<std::ptrdiff_t>(v), replacement.begin(),
+                      replacement.end());
+          const std::vector<double> moved = Fit();
+          // Corner j of the new path was corner j (before the replacement) or j - grown
+          // (after it) of the old; those around the replacement changed shape, the others only
+          // where their distance changed.
+          const size_t grown = replacement.size() - 1;
+          auto old_clear = [&](size_t j) -> std::optional<double> {
+            if (j + 1 >= c && j <= c + 1 + grown) return std::nullopt;
+            const size_t old = j < c ? j : j - grown;
+            if (moved[j] != fitted[old]) return std::nullopt;
+            return clear[old];
+          };
+          // Without the clearance's shrinking first: a bound below the score.
+          double bound = 0.0;
+          for (size_t j = 0; j < corners(); ++j) {
+            bound += Shortfall(j, old_clear(j).value_or(moved[j]));
+          }
+          if (better(bound, added, 2e-9)) {
+            double score = 0.0;
+            for (size_t j = 0; j < corners(); ++j) {
+              std::optional<double> d = old_clear(j);
+              if (!d) {
+                const std::optional<BezierCorner> corner = ClearCorner(j, moved[j]);
+                d = corner ? corner->d : 0.0;
+              }
+              score += Shortfall(j, *d);
+            }
+            if (better(score, added, 1e-9)) {
+              found = true;
+              best = score;
+              best_added = added;
+              best_pts = pts_;
+            }
+          }
+          pts_ = original;
+        }
+      }
+      if (found) {
+        pts_ = std::move(best_pts);
+        return true;
+      }
+    }
+    return false;
+  }
+
   BoundedCurvatureResult Assemble() const {
     BoundedCurvatureResult result;
     result.corners = static_cast<int>(corners());
@@ -121,15 +279,7 @@ class CornerRounding {
     out.push_back(Lift(pts_.front()));
     for (size_t i = 0; i < corners(); ++i) {
       const double needed = Needed(i);
-      std::optional<BezierCorner> corner =
-          MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], d[i]);
-      for (int shrinks = 0; !CurveFree(*corner); ++shrinks) {
-        if (shrinks == kMaxShrinks) {
-          corner.reset();
-          break;
-        }
-        *corner = MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], 0.5 * corner->d);
-      }
+      const std::optional<BezierCorner> corner = ClearCorner(i, d[i]);
       if (!corner || corner->d < needed * (1.0 - 1e-9)) ++result.corners_over;
       if (!corner) {
         out.push_back(Lift(pts_[i + 1]));
@@ -179,21 +329,24 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
     return kept;
   }
   std::optional<BoundedCurvatureResult> best;
-  for (const double tolerance : kTolerancesInRadii) {
-    const Path simplified =
-        SimplifyWithin(flat, tolerance * options.turning_radius, checker, options.clearance);
-    BoundedCurvatureResult attempt;
-    if (simplified.size() < 3) {
-      attempt.path = simplified;
-      attempt.corner_polygon = simplified;
-      attempt.collision_free = checker.PathFree(simplified, options.clearance);
-    } else {
-      std::vector<Point2> points;
-      for (const Point3& p : simplified) points.emplace_back(p.x(), p.y());
-      attempt = CornerRounding(std::move(points), options, checker).Run();
+  for (const bool make_room : {false, true}) {
+    for (const double tolerance : kTolerancesInRadii) {
+      const Path simplified =
+          SimplifyWithin(flat, tolerance * options.turning_radius, checker, options.clearance);
+      BoundedCurvatureResult attempt;
+      if (simplified.size() < 3) {
+        if (make_room) continue;
+        attempt.path = simplified;
+        attempt.corner_polygon = simplified;
+        attempt.collision_free = checker.PathFree(simplified, options.clearance);
+      } else {
+        std::vector<Point2> points;
+        for (const Point3& p : simplified) points.emplace_back(p.x(), p.y());
+        attempt = CornerRounding(std::move(points), options, checker).Run(make_room);
+      }
+      if (attempt.collision_free && attempt.corners_over == 0) return attempt;
+      if (!best || Better(attempt, *best)) best = std::move(attempt);
     }
-    if (attempt.collision_free && attempt.corners_over == 0) return attempt;
-    if (!best || Better(attempt, *best)) best = std::move(attempt);
   }
   return *std::move(best);
 }

@@ -36,8 +36,14 @@ struct BoundedCurvatureResult {
 //    its bisector (its curve moves with it), when its two lines stay clear;
 // 4. a corner still without room or clearance gets a shorter curve, turning tighter than
 //    1 / radius (counted in corners_over), or stays sharp.
-// The first tolerance with every corner at 1 / radius and the whole path clear is the result;
-// otherwise the clear one with the fewest corners over. The corners are designed for a radius 1 %
+// The first tolerance with every corner at 1 / radius and the whole path clear is the result.
+// When no tolerance gives one, the tolerances are tried again with a step between 3 and 4: while
+// a corner falls short, the vertex of it or of a neighbour moves (along its lines, or up to two
+// radii in any direction) or splits in two about a straight piece through it, keeping its lines
+// clear, wherever that lowers the corners' summed shortfall of the distance their curves need
+// the most; so an S-bend whose middle line is too short, or a turn just before a gap as wide as
+// the clearance allows, finds room beside it when the map has any. Failing that too, the result
+// is the clear attempt with the fewest corners over. The corners are designed for a radius 1 %
 // larger, so the sampled polyline's discrete curvature stays within 1 / radius.
 BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
                                              const BoundedCurvatureOptions& options,

@@ -10,6 +10,7 @@
 #include "core/geometry/collision.h"
 #include "core/map/map.h"
 #include "core/path_metrics.h"
+#include "core/smoothing/bezier.h"
 #include "core/smoothing/cubic_spline.h"
 #include "core/smoothing/smoothing.h"
 #include "tests/unit/seed_test_maps.h"
@@ -61,6 +62,32 @@ TEST(BoundedCurvatureTest, JoinsTwoCrowdedCornersTurningTheSameWay) {
   EXPECT_EQ(r.corners, 1);
 }
 
+TEST(BoundedCurvatureTest, MovesAVertexToMakeRoomForAnSBend) {
+  // A jog between two blocks: every shortcut of its two corners hits a block, and the 5 between
+  // them is too short for two turns of 84 degrees at a radius of 2; the room is further along.
+  Polygon upper_left{{{0, 5}, {14, 5}, {14, 20}, {0, 20}}};
+  Polygon lower_right{{{22, 0}, {40, 0}, {40, 7}, {22, 7}}};
+  const MapPtr map = std::make_shared<const Map>(
+      Map::Data(*ShapeWorld::Create({{0, 0}, {40, 20}}, {}, {upper_left, lower_right})));
+  const auto checker = MakeCollisionChecker(*map);
+  const Path raw{{2, 3, 0}, {16, 3, 0}, {16.5, 8, 0}, {38, 8, 0}};
+  ASSERT_TRUE(checker->PathFree(raw, 0.5));
+  ASSERT_FALSE(checker->SegmentFree(raw[0], raw[2], 0.5));
+  ASSERT_FALSE(checker->SegmentFree(raw[1], raw[3], 0.5));
+  ASSERT_FALSE(checker->SegmentFree(raw[0], raw[3], 0.5));
+  const Point2 a(raw[0].x(), raw[0].y()), b(raw[1].x(), raw[1].y()), c(raw[2].x(), raw[2].y());
+  const double needed = BezierDistanceForCurvature(
+      HalfHeadingChange((a - b).normalized(), (c - b).normalized()), 0.5);
+  ASSERT_GT(2 * needed, (c - b).norm()) << "the corners' curves would overlap";
+  BoundedCurvatureOptions options;
+  options.turning_radius = 2.0;
+  options.clearance = 0.5;
+  const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
+  ExpectSmoothedPath(*map, raw, r, 2.0, 0.5);
+  EXPECT_LE(r.max_curvature, 0.5);
+  EXPECT_LT(PathLength(r.path), 1.05 * PathLength(raw));
+}
+
 TEST(BoundedCurvatureTest, ReducesADenselySampledCurveToItsFewCorners) {
   const MapPtr map = EmptyWorld();
   const auto checker = MakeCollisionChecker(*map);
@@ -102,11 +129,15 @@ TEST(BoundedCurvatureTest, KeepsAPathThatAlreadyTurnsWideEnough) {
 }
 
 TEST(BoundedCurvatureTest, ReportsCornersWithoutRoomInsteadOfHidingThem) {
-  const MapPtr map = EmptyWorld();
-  const auto checker = MakeCollisionChecker(*map);
-  // A hairpin 1 wide cannot turn with a radius of 5 and stays within 0.05 radii of a path that
-  // needs it: the result says so.
-  const Path raw{{2, 2, 0}, {30, 2, 0}, {30, 3, 0}, {2, 3, 0}};
+  // A hairpin round the end of a thin wall in a corridor 4 wide cannot turn with a radius of
+  // 5, wherever its corners move: the result says so.
+  Polygon above{{{0, 4}, {40, 4}, {40, 30}, {0, 30}}};
+  Polygon wall{{{0, 2.2}, {28, 2.2}, {28, 2.6}, {0, 2.6}}};
+  const MapPtr corridor = std::make_shared<const Map>(
+      Map::Data(*ShapeWorld::Create({{0, 0}, {40, 30}}, {}, {above, wall})));
+  const auto checker = MakeCollisionChecker(*corridor);
+  const Path raw{{2, 1.4, 0}, {29.5, 1.4, 0}, {29.5, 3.4, 0}, {2, 3.4, 0}};
+  ASSERT_TRUE(checker->PathFree(raw, 0.0));
   BoundedCurvatureOptions options;
   options.turning_radius = 5.0;
   const BoundedCurvatureResult r = SmoothToTurningRadius(raw, options, *checker);
@@ -114,11 +145,12 @@ TEST(BoundedCurvatureTest, ReportsCornersWithoutRoomInsteadOfHidingThem) {
   EXPECT_GT(r.corners_over, 0);
   EXPECT_GT(r.max_curvature, 1.0 / 5.0);
   // Smooth says so too, and says the opposite where the radius fits.
-  absl::StatusOr<SmoothingResult> hairpin = Smooth("bounded-curvature", *map, raw, 0.0, 5.0);
+  absl::StatusOr<SmoothingResult> hairpin = Smooth("bounded-curvature", *corridor, raw, 0.0, 5.0);
   ASSERT_TRUE(hairpin.ok()) << hairpin.status();
   EXPECT_FALSE(hairpin->within_turning_radius);
   const Path corner{{2, 2, 0}, {30, 2, 0}, {30, 25, 0}};
-  absl::StatusOr<SmoothingResult> wide = Smooth("bounded-curvature", *map, corner, 0.0, 5.0);
+  absl::StatusOr<SmoothingResult> wide =
+      Smooth("bounded-curvature", *EmptyWorld(), corner, 0.0, 5.0);
   ASSERT_TRUE(wide.ok()) << wide.status();
   EXPECT_TRUE(wide->within_turning_radius);
 }
