@@ -165,7 +165,7 @@ absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int 
   const double hard = problem.clearance;
   const double room = problem.fleet.preferred_clearance - hard;
   std::vector<double> rungs = {0.0};
-  if (!problem.map->is_3d() && room > 0) rungs = {room, 0.5 * room, 0.0};
+  if (!problem.map->is_3d() && room > 0) rungs = {room, 0.5 * room, 0.25 * room, 0.0};
   const bool grid = problem.map->grid() != nullptr;
   for (const double extra : rungs) {
     ParamValues given;

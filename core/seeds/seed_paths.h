@@ -28,8 +28,10 @@ struct SeedPath {
 // exists. The exact planners' errors (an endpoint they cannot use) are returned as they are;
 // `stop` is passed to every search, and a tripped stop ends the list early.
 // With a preferred clearance above the hard one (problem.fleet), the seeds are first sought
-// keeping the preferred clearance, then halfway between the two, then the hard clearance: the
-// first that gives a path gives every seed, so a fleet's seeds leave room where the map does.
+// keeping the preferred clearance, then halfway between the two, then a quarter of the way, then
+// the hard clearance: the first that gives a path gives every seed, so a fleet's seeds leave
+// room where the map does (and gaps exactly as wide as the hard clearance allows, where no
+// curve fits, only where the map has no other way).
 // On grids the start and goal need keep only the hard clearance (exact-any-angle's margin).
 absl::StatusOr<std::vector<SeedPath>> FindSeedPaths(const Problem& problem, int count,
                                                     const StopToken& stop);

@@ -62,8 +62,7 @@ TEST(PlanObjectiveTest, ASeededPlanIsNeverWorseThanItsSmoothedSeed) {
 }
 
 // 40 x 30 cells, blocked but for a corridor two cells wide that zig-zags three times, with
-// rooms of 6 x 6 cells at its turns: the preferred clearance of 1.5 fits nowhere in the
-// corridor, so the seed keeps only the hard clearance and grazes the walls at every turn.
+// rooms of 6 x 6 cells at its turns.
 MapPtr ZigZagCorridor() {
   constexpr int kWidth = 40, kHeight = 30;
   std::vector<int8_t> cells(kWidth * kHeight, OccupancyGrid::kOccupied);
@@ -85,9 +84,11 @@ MapPtr ZigZagCorridor() {
       Map::Data(*OccupancyGrid::Create(kWidth, kHeight, std::move(cells))));
 }
 
-// A seed at the hard clearance sits where nearly every move of the whole path crosses a wall;
-// the swarm starts from the seed moved off the walls too, and from draws around both, so it
-// finds the trade of length for clearance and curvature that the seed cannot make.
+// A preferred clearance of 3 fits nowhere in the corridor, nor does a quarter of the way to it
+// from the hard clearance (1.125), so the seed keeps only the hard clearance and grazes the
+// walls at every turn. It sits where nearly every move of the whole path crosses a wall; the
+// swarm starts from the seed moved off the walls too, and from draws around both, so it finds
+// the trade of length for clearance and curvature that the seed cannot make.
 TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASeedThatGrazesTheWalls) {
   for (const std::string algorithm : {"aem-bso", "pso", "ba"}) {
     for (uint64_t seed = 1; seed <= 2; ++seed) {
@@ -96,6 +97,7 @@ TEST(PlanObjectiveTest, ASeededSwarmImprovesOnASeedThatGrazesTheWalls) {
       request.problem.map = ZigZagCorridor();
       request.problem.start = {3.5, 3.5, 0};
       request.problem.goal = {35.5, 25.5, 0};
+      request.problem.fleet.preferred_clearance = 3.0;
       request.problem.limits.max_iterations = 30;
       PlanResult result;
       ASSERT_NO_FATAL_FAILURE(PlanWithObjectives(request, result));

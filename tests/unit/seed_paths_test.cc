@@ -1,11 +1,13 @@
 #include "core/seeds/seed_paths.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "core/map/io/map_io.h"
+#include "core/map/occupancy_grid.h"
 #include "core/optimum.h"
 #include "core/path_metrics.h"
 #include "core/registry.h"
@@ -55,6 +57,35 @@ TEST(SeedPathsTest, GridSeedsTakeOneDoorEachShortestFirst) {
                second = CrossingX((*seeds)[1].path, 15.5);
   EXPECT_TRUE(first >= 30 && first <= 34) << first;
   EXPECT_TRUE(second >= 4 && second <= 8) << second;
+}
+
+// Two ways from the lower half to the upper: a door one cell wide (room for the hard clearance
+// only) straight between start and goal, and far to the left a diagonal gap between two walls'
+// ends, sqrt(5) wide. A fleet with a hard clearance of 0.5 and a preferred one of 2.5 finds no
+// path keeping 2.5 or halfway (1.5), but one keeping a quarter of the way (1.0): through the gap,
+// where a curve has room, not through the door.
+TEST(SeedPathsTest, FleetSeedsTakeTheGapWithRoomOverTheShorterPinch) {
+  std::vector<int8_t> cells(40 * 30, OccupancyGrid::kFree);
+  for (int x = 0; x <= 10; ++x) cells[10 * 40 + x] = OccupancyGrid::kOccupied;
+  for (int x = 13; x < 40; ++x) {
+    if (x != 30) cells[12 * 40 + x] = OccupancyGrid::kOccupied;
+  }
+  const MapPtr map =
+      std::make_shared<const Map>(Map::Data(*OccupancyGrid::Create(40, 30, std::move(cells))));
+  Problem problem = ProblemOn(map, {30.5, 5.5}, {30.5, 20.5});
+  problem.clearance = 0.5;
+  absl::StatusOr<std::vector<SeedPath>> hard = FindSeedPaths(problem, 1, StopToken());
+  ASSERT_TRUE(hard.ok()) << hard.status();
+  ASSERT_EQ(hard->size(), 1u);
+  EXPECT_NEAR(CrossingX(hard->front().path, 12.5), 30.5, 1e-9) << "without a fleet: the door";
+
+  problem.fleet.preferred_clearance = 2.5;
+  absl::StatusOr<std::vector<SeedPath>> seeds = FindSeedPaths(problem, 1, StopToken());
+  ASSERT_TRUE(seeds.ok()) << seeds.status();
+  ASSERT_EQ(seeds->size(), 1u);
+  ExpectValidSeeds(problem, *seeds);
+  EXPECT_GE(Clearance(*map, seeds->front().path), 1.0 - 1e-9);
+  EXPECT_LT(CrossingX(seeds->front().path, 11.5), 13.0) << "through the gap";
 }
 
 TEST(SeedPathsTest, ShapeWorldSeedsPassOnEitherSide) {
