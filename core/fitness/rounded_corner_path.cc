@@ -17,11 +17,6 @@ constexpr double kNearCurveInRadii = 0.2;
 // the smoothing's curves are among ours and the smoothed seed keeps its clearance here too.
 constexpr int kSmoothingChordsPerCubic = 16;
 constexpr int kMaxChordsPerCubic = 4 * kSmoothingChordsPerCubic;
-// Corners whose curve would end closer than this (in radii) to their vertex stay sharp: a curve
-// that small would only sample the rounding of its coordinates. Such a corner turns by less
-// than about a thousandth of a radian, or its lines leave it no room, and then the curvature
-// term prices it as it would the tiny curve.
-constexpr double kSmallestCurveInRadii = 1e-3;
 // Points a path may need beyond its straight parts' spacing: per corner two cubics, and per
 // straight part the rounding up of its pieces, the points beside the curves and its end.
 constexpr int kPointsPerCorner = 2 * kMaxChordsPerCubic + 5;

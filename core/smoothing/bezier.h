@@ -22,6 +22,11 @@ struct BezierConstants {
   static const double c4;  // (c2 + 4)²/(54·c3)
 };
 
+// Corners whose curve would end closer than this (in radii) to their vertex stay sharp: a curve
+// that small would only sample the rounding of its coordinates. Such a corner turns by less
+// than about a thousandth of a radian, or its lines leave it no room.
+inline constexpr double kSmallestCurveInRadii = 1e-3;
+
 // The eight control points of one corner.
 struct BezierCorner {
   Point2 b[4];  // first curve, from the incoming line to the joint

@@ -37,6 +37,7 @@ class CornerRounding {
                  const CollisionChecker& checker)
       : pts_(std::move(points)),
         curvature_(1.0 / (kRadiusMargin * options.turning_radius)),
+        smallest_curve_(kSmallestCurveInRadii * options.turning_radius),
         options_(options),
         checker_(checker) {}
 
@@ -49,6 +50,7 @@ class CornerRounding {
     for (int round = 0; make_room && round < kRoomRounds; ++round) {
       if (!MoveOneVertexForRoom()) break;
     }
+    DropStraightVertices();
     return Assemble();
   }
 
@@ -124,22 +126,35 @@ class CornerRounding {
     return false;
   }
 
+  // Vertices that turn too little to need a curve go where the line past them is clear.
+  void DropStraightVertices() {
+    for (size_t i = 0; i < corners();) {
+      if (Needed(i) < smallest_curve_ && Free(pts_[i], pts_[i + 2])) {
+        pts_.erase(pts_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+      } else {
+        ++i;
+      }
+    }
+  }
+
   // Corner i's curve at distance d from its vertex, halved until it keeps the clearance; none
-  // when it still does not after kMaxShrinks halvings (the corner stays sharp).
+  // (the corner stays sharp) when it is or becomes smaller than the smallest curve, or still
+  // comes too close after kMaxShrinks halvings.
   std::optional<BezierCorner> ClearCorner(size_t i, double d) const {
+    if (d < smallest_curve_) return std::nullopt;
     BezierCorner corner = MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], d);
     for (int shrinks = 0; !CurveFree(corner); ++shrinks) {
-      if (shrinks == kMaxShrinks) return std::nullopt;
+      if (shrinks == kMaxShrinks || 0.5 * corner.d < smallest_curve_) return std::nullopt;
       corner = MakeBezierCorner(pts_[i], pts_[i + 1], pts_[i + 2], 0.5 * corner.d);
     }
     return corner;
   }
 
-  // How far a curve at distance d falls short of what corner i needs: 0 (room enough) to 1
-  // (sharp).
+  // How far a curve at distance d falls short of what corner i needs: 0 (room enough, or a
+  // turn too small to need a curve) to 1 (sharp).
   double Shortfall(size_t i, double d) const {
     const double needed = Needed(i);
-    return needed > 0 ? std::max(0.0, 1.0 - d / needed) : 0.0;
+    return needed >= smallest_curve_ ? std::max(0.0, 1.0 - d / needed) : 0.0;
   }
 
   // The distance of each corner's clear curve from its vertex (0 where it stays sharp), for
@@ -280,7 +295,9 @@ class CornerRounding {
     for (size_t i = 0; i < corners(); ++i) {
       const double needed = Needed(i);
       const std::optional<BezierCorner> corner = ClearCorner(i, d[i]);
-      if (!corner || corner->d < needed * (1.0 - 1e-9)) ++result.corners_over;
+      if (needed >= smallest_curve_ && (!corner || corner->d < needed * (1.0 - 1e-9))) {
+        ++result.corners_over;
+      }
       if (!corner) {
         out.push_back(Lift(pts_[i + 1]));
         continue;
@@ -297,6 +314,7 @@ class CornerRounding {
 
   std::vector<Point2> pts_;
   double curvature_;
+  double smallest_curve_;  // a corner whose curve would be shorter stays sharp
   const BoundedCurvatureOptions& options_;
   const CollisionChecker& checker_;
 };

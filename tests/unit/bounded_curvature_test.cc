@@ -5,15 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/collision.h"
+#include "core/map/io/map_io.h"
 #include "core/map/map.h"
 #include "core/path_metrics.h"
+#include "core/seeds/seed_paths.h"
 #include "core/smoothing/bezier.h"
 #include "core/smoothing/cubic_spline.h"
 #include "core/smoothing/smoothing.h"
 #include "tests/unit/seed_test_maps.h"
+#include "tests/unit/test_support.h"
 
 namespace swarmplan {
 namespace {
@@ -86,6 +90,42 @@ TEST(BoundedCurvatureTest, MovesAVertexToMakeRoomForAnSBend) {
   ExpectSmoothedPath(*map, raw, r, 2.0, 0.5);
   EXPECT_LE(r.max_curvature, 0.5);
   EXPECT_LT(PathLength(r.path), 1.05 * PathLength(raw));
+}
+
+// Two long problems of random512-10-0, whose obstacles are single cells: the fleet seeds there
+// keep a quarter of the way to the preferred clearance, and their smoothing moves and splits
+// corners among the cells until every one has room for a radius of 2. None may leave a vertex
+// that turns too little for a curve as a curve of a few nanometres (a spike in the discrete
+// curvature).
+TEST(BoundedCurvatureTest, FleetSeedsOnARandomGridKeepTheRadius) {
+  SWARMPLAN_REQUIRE_BENCHMARKS("movingai/random512-10-0.map");
+  absl::StatusOr<Map> loaded =
+      LoadMapFile(::swarmplan::testing::BenchmarksDir() + "/movingai/random512-10-0.map");
+  ASSERT_TRUE(loaded.ok()) << loaded.status();
+  const MapPtr map = std::make_shared<const Map>(*std::move(loaded));
+  const auto checker = MakeCollisionChecker(*map);
+  const std::pair<Point2, Point2> problems[] = {{{93.5, 139.5}, {412.5, 184.5}},
+                                                {{8.5, 467.5}, {491.5, 277.5}}};
+  for (const auto& [start, goal] : problems) {
+    Problem problem;
+    problem.map = map;
+    problem.start = {start.x(), start.y(), 0};
+    problem.goal = {goal.x(), goal.y(), 0};
+    problem.clearance = 0.5;
+    problem.fleet.preferred_clearance = 1.5;
+    problem.fleet.turning_radius = 2.0;
+    absl::StatusOr<std::vector<SeedPath>> seeds = FindSeedPaths(problem, 3, StopToken());
+    ASSERT_TRUE(seeds.ok()) << seeds.status();
+    ASSERT_FALSE(seeds->empty());
+    BoundedCurvatureOptions options;
+    options.turning_radius = 2.0;
+    options.clearance = 0.5;
+    for (const SeedPath& seed : *seeds) {
+      SCOPED_TRACE(seed.length);
+      const BoundedCurvatureResult r = SmoothToTurningRadius(seed.path, options, *checker);
+      ExpectSmoothedPath(*map, seed.path, r, 2.0, 0.5);
+    }
+  }
 }
 
 TEST(BoundedCurvatureTest, ReducesADenselySampledCurveToItsFewCorners) {
