@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "core/path_metrics.h"
@@ -21,8 +22,10 @@ constexpr double kTolerancesInRadii[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.6};
 constexpr int kClearanceRepairRounds = 32;
 // Halvings of a colliding corner's curve before it stays sharp.
 constexpr int kMaxShrinks = 8;
-// Vertex moves that make room for corners at most.
+// Vertex moves that make room for corners at most per tolerance, and candidate replacements
+// tried at most per smoothing (over all tolerances).
 constexpr int kRoomRounds = 64;
+constexpr int kMaxRoomCandidates = 10000;
 // Where a vertex may move to make room, in radii: along its lines and on rings around it (also
 // the lengths of the straight pieces a vertex is split into).
 constexpr double kSlidesInRadii[] = {0.125, 0.25, 0.5, 1.0, 2.0};
@@ -33,11 +36,14 @@ double Cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * 
 
 class CornerRounding {
  public:
+  // `room_candidates`: the candidate replacements MoveOneVertexForRoom may still try, shared
+  // with the smoothing's other attempts.
   CornerRounding(std::vector<Point2> points, const BoundedCurvatureOptions& options,
-                 const CollisionChecker& checker)
+                 const CollisionChecker& checker, int& room_candidates)
       : pts_(std::move(points)),
         curvature_(1.0 / (kRadiusMargin * options.turning_radius)),
         smallest_curve_(kSmallestCurveInRadii * options.turning_radius),
+        room_candidates_(room_candidates),
         options_(options),
         checker_(checker) {}
 
@@ -150,10 +156,9 @@ class CornerRounding {
     return corner;
   }
 
-  // How far a curve at distance d falls short of what corner i needs: 0 (room enough, or a
+  // How far a curve at distance d falls short of the distance `needed`: 0 (room enough, or a
   // turn too small to need a curve) to 1 (sharp).
-  double Shortfall(size_t i, double d) const {
-    const double needed = Needed(i);
+  double Shortfall(double needed, double d) const {
     return needed >= smallest_curve_ ? std::max(0.0, 1.0 - d / needed) : 0.0;
   }
 
@@ -183,10 +188,17 @@ class CornerRounding {
         }
       }
     }
-    for (const double ring : kRingsInRadii) {
+    static const std::vector<Point2> directions = [] {
+      std::vector<Point2> unit;
       for (int k = 0; k < kRingDirections; ++k) {
         const double angle = 2.0 * M_PI * k / kRingDirections;
-        out.push_back({vertex + ring * radius * Point2(std::cos(angle), std::sin(angle))});
+        unit.emplace_back(std::cos(angle), std::sin(angle));
+      }
+      return unit;
+    }();
+    for (const double ring : kRingsInRadii) {
+      for (const Point2& direction : directions) {
+        out.push_back({vertex + ring * radius * direction});
       }
     }
     const Point2 heading =
@@ -200,19 +212,28 @@ class CornerRounding {
     return out;
   }
 
-  // Takes the first corner whose clear curve falls short of the radius and replaces the vertex
-  // of it or of a neighbouring corner (Replacements), keeping the lines clear, by what lowers the
-  // corners' summed shortfall the most (the shorter path among equals). Returns whether it
-  // replaced one.
+  // Takes a corner whose clear curve falls short of the radius and replaces the vertex of it or
+  // of a neighbouring corner (Replacements), keeping the lines clear, by what lowers the corners'
+  // summed shortfall the most (the shorter path among equals). Corners whose neighbourhood had
+  // no such replacement before are not tried again, and the candidates tried per Run are
+  // bounded. Returns whether it replaced one.
   bool MoveOneVertexForRoom() {
-    const std::vector<double> fitted = Fit();
+    std::vector<double> needed(corners()), segments(pts_.size() - 1);
+    for (size_t i = 0; i < corners(); ++i) needed[i] = Needed(i);
+    for (size_t j = 0; j < segments.size(); ++j) segments[j] = Segment(j);
+    const std::vector<double> fitted = FitCornerDistances(needed, segments);
     const std::vector<double> clear = ClearDistances(fitted);
     double current = 0.0;
-    for (size_t i = 0; i < corners(); ++i) current += Shortfall(i, clear[i]);
+    for (size_t i = 0; i < corners(); ++i) current += Shortfall(needed[i], clear[i]);
     const double least_room = 1e-6 * options_.turning_radius;
     const std::vector<Point2> original = pts_;
     for (size_t i = 0; i < corners(); ++i) {
-      if (Shortfall(i, clear[i]) <= 0) continue;
+      if (Shortfall(needed[i], clear[i]) <= 0) continue;
+      std::vector<double> window;
+      for (size_t j = i > 0 ? i - 1 : 0; j < std::min(i + 4, pts_.size()); ++j) {
+        window.insert(window.end(), {pts_[j].x(), pts_[j].y()});
+      }
+      if (stuck_.contains(window)) continue;
       bool found = false;
       double best = 0.0, best_added = 0.0;
       std::vector<Point2> best_pts;
@@ -227,27 +248,30 @@ class CornerRounding {
         const double before =
             (original[v] - original[v - 1]).norm() + (original[v + 1] - original[v]).norm();
         for (const std::vector<Point2>& replacement : Replacements(v)) {
-          std::vector<Point2> chain = {original[v - 1]};
-          chain.insert(chain.end(), replacement.begin(), replacement.end());
-          chain.push_back(original[v + 1]);
-          double added = -before;
-          bool free = true;
-          for (size_t k = 0; free && k + 1 < chain.size(); ++k) {
-            const double line = (chain[k + 1] - chain[k]).norm();
-            added += line;
-            free = line >= least_room && Free(chain[k], chain[k + 1]);
-          }
-          if (!free) continue;
-          pts_.erase(pts_.begin() + static_cast<std::ptrdiff_t>(v));
-          pts_.insert(pts_.begin() + static_cast<std::ptrdiff_t>(v), replacement.begin(),
-                      replacement.end());
-          const std::vector<double> moved = Fit();
-          // Corner j of the new path was corner j (before the replacement) or j - grown
-          // (after it) of the old; those around the replacement changed shape, the others only
-          // where their distance changed.
+          if (room_candidates_ == 0) return false;
+          --room_candidates_;
+          const auto at = static_cast<std::ptrdiff_t>(v);
+          pts_.erase(pts_.begin() + at);
+          pts_.insert(pts_.begin() + at, replacement.begin(), replacement.end());
+          // Corner j of the new path was corner j (before the replacement) or j - grown (after
+          // it) of the old; corners c - 1 .. c + 1 + grown changed shape, and lines c .. c +
+          // 1 + grown length. The others keep their clear curve where their distance did not
+          // change.
           const size_t grown = replacement.size() - 1;
+          const size_t first = c > 0 ? c - 1 : 0, last = std::min(c + 1 + grown, corners() - 1);
+          std::vector<double> trial_needed(needed), trial_segments(segments);
+          trial_needed.insert(trial_needed.begin() + static_cast<std::ptrdiff_t>(c), grown, 0.0);
+          trial_segments.insert(trial_segments.begin() + static_cast<std::ptrdiff_t>(c), grown,
+                                0.0);
+          for (size_t j = first; j <= last; ++j) trial_needed[j] = Needed(j);
+          double added = -before;
+          for (size_t j = c; j <= c + 1 + grown; ++j) {
+            trial_segments[j] = Segment(j);
+            added += trial_segments[j];
+          }
+          const std::vector<double> moved = FitCornerDistances(trial_needed, trial_segments);
           auto old_clear = [&](size_t j) -> std::optional<double> {
-            if (j + 1 >= c && j <= c + 1 + grown) return std::nullopt;
+            if (j >= first && j <= last) return std::nullopt;
             const size_t old = j < c ? j : j - grown;
             if (moved[j] != fitted[old]) return std::nullopt;
             return clear[old];
@@ -255,9 +279,13 @@ class CornerRounding {
           // Without the clearance's shrinking first: a bound below the score.
           double bound = 0.0;
           for (size_t j = 0; j < corners(); ++j) {
-            bound += Shortfall(j, old_clear(j).value_or(moved[j]));
+            bound += Shortfall(trial_needed[j], old_clear(j).value_or(moved[j]));
           }
-          if (better(bound, added, 2e-9)) {
+          bool free = better(bound, added, 2e-9);
+          for (size_t j = c; free && j <= c + 1 + grown; ++j) {
+            free = trial_segments[j] >= least_room && Free(pts_[j], pts_[j + 1]);
+          }
+          if (free) {
             double score = 0.0;
             for (size_t j = 0; j < corners(); ++j) {
               std::optional<double> d = old_clear(j);
@@ -265,7 +293,7 @@ class CornerRounding {
                 const std::optional<BezierCorner> corner = ClearCorner(j, moved[j]);
                 d = corner ? corner->d : 0.0;
               }
-              score += Shortfall(j, *d);
+              score += Shortfall(trial_needed[j], *d);
             }
             if (better(score, added, 1e-9)) {
               found = true;
@@ -281,6 +309,7 @@ class CornerRounding {
         pts_ = std::move(best_pts);
         return true;
       }
+      stuck_.insert(std::move(window));
     }
     return false;
   }
@@ -315,6 +344,10 @@ class CornerRounding {
   std::vector<Point2> pts_;
   double curvature_;
   double smallest_curve_;  // a corner whose curve would be shorter stays sharp
+  // MoveOneVertexForRoom's state: the neighbourhoods (coordinates of the vertices around a
+  // corner) where no replacement helped, and the candidates the smoothing may still try.
+  std::set<std::vector<double>> stuck_;
+  int& room_candidates_;
   const BoundedCurvatureOptions& options_;
   const CollisionChecker& checker_;
 };
@@ -347,6 +380,7 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
     return kept;
   }
   std::optional<BoundedCurvatureResult> best;
+  int room_candidates = kMaxRoomCandidates;
   for (const bool make_room : {false, true}) {
     for (const double tolerance : kTolerancesInRadii) {
       const Path simplified =
@@ -360,7 +394,8 @@ BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
       } else {
         std::vector<Point2> points;
         for (const Point3& p : simplified) points.emplace_back(p.x(), p.y());
-        attempt = CornerRounding(std::move(points), options, checker).Run(make_room);
+        attempt =
+            CornerRounding(std::move(points), options, checker, room_candidates).Run(make_room);
       }
       if (attempt.collision_free && attempt.corners_over == 0) return attempt;
       if (!best || Better(attempt, *best)) best = std::move(attempt);
