@@ -79,10 +79,17 @@ class CornerRounding {
   // The distance of each corner's curve from its vertex: what the curvature needs, within the
   // room the segments leave.
   std::vector<double> Fit() const {
-    std::vector<double> needed(corners()), segments(pts_.size() - 1);
+    std::vector<double> needed, segments;
+    Measure(needed, segments);
+    return FitCornerDistances(needed, segments);
+  }
+
+  // What each corner's curve needs, and each line's length.
+  void Measure(std::vector<double>& needed, std::vector<double>& segments) const {
+    needed.resize(corners());
+    segments.resize(pts_.size() - 1);
     for (size_t i = 0; i < corners(); ++i) needed[i] = Needed(i);
     for (size_t j = 0; j < segments.size(); ++j) segments[j] = Segment(j);
-    return FitCornerDistances(needed, segments);
   }
 
   // Corners i and i + 1 turning the same way with too little room between them become one at
@@ -215,12 +222,11 @@ class CornerRounding {
   // Takes a corner whose clear curve falls short of the radius and replaces the vertex of it or
   // of a neighbouring corner (Replacements), keeping the lines clear, by what lowers the corners'
   // summed shortfall the most (the shorter path among equals). Corners whose neighbourhood had
-  // no such replacement before are not tried again, and the candidates tried per Run are
-  // bounded. Returns whether it replaced one.
+  // no such replacement before are not tried again, and the candidates tried per smoothing are
+  // bounded (kMaxRoomCandidates). Returns whether it replaced one.
   bool MoveOneVertexForRoom() {
-    std::vector<double> needed(corners()), segments(pts_.size() - 1);
-    for (size_t i = 0; i < corners(); ++i) needed[i] = Needed(i);
-    for (size_t j = 0; j < segments.size(); ++j) segments[j] = Segment(j);
+    std::vector<double> needed, segments;
+    Measure(needed, segments);
     const std::vector<double> fitted = FitCornerDistances(needed, segments);
     const std::vector<double> clear = ClearDistances(fitted);
     double current = 0.0;

@@ -42,9 +42,10 @@ struct BoundedCurvatureResult {
 // radii in any direction) or splits in two about a straight piece through it, keeping its lines
 // clear, wherever that lowers the corners' summed shortfall of the distance their curves need
 // the most; so an S-bend whose middle line is too short, or a turn just before a gap as wide as
-// the clearance allows, finds room beside it when the map has any. Failing that too, the result
-// is the clear attempt with the fewest corners over. The corners are designed for a radius 1 %
-// larger, so the sampled polyline's discrete curvature stays within 1 / radius.
+// the clearance allows, finds room beside it when the map has any (at most 10000 candidate
+// moves per smoothing, which bounds the time a path without room anywhere takes). Failing that
+// too, the result is the clear attempt with the fewest corners over. The corners are designed
+// for a radius 1 % larger, so the sampled polyline's discrete curvature stays within 1 / radius.
 BoundedCurvatureResult SmoothToTurningRadius(const Path& raw,
                                              const BoundedCurvatureOptions& options,
                                              const CollisionChecker& checker);
