@@ -5,13 +5,14 @@
 
 #include "core/grid_ops/shortcut.h"
 #include "core/path_metrics.h"
+#include "core/smoothing/bounded_curvature.h"
 
 namespace swarmplan {
 
 absl::StatusOr<GridPathCost> GridPathCost::Create(const Problem& problem, const GridSpace& space) {
   const FleetObjective& fleet = problem.fleet;
   if (fleet.preferred_clearance <= 0.0 && fleet.turning_radius <= 0.0) {
-    return GridPathCost(space, 0.0, nullptr);
+    return GridPathCost(space, problem, nullptr);
   }
   WaypointFitnessOptions options;
   options.waypoints = 1;
@@ -20,13 +21,18 @@ absl::StatusOr<GridPathCost> GridPathCost::Create(const Problem& problem, const 
   options.fleet = fleet;
   absl::StatusOr<FitnessEngine> engine = FitnessEngine::Create(problem, options);
   if (!engine.ok()) return engine.status();
-  return GridPathCost(space, fleet.preferred_clearance,
-                      std::make_unique<FitnessEngine>(*std::move(engine)));
+  return GridPathCost(space, problem, std::make_unique<FitnessEngine>(*std::move(engine)));
 }
 
-GridPathCost::GridPathCost(const GridSpace& space, double preferred_clearance,
+GridPathCost::GridPathCost(const GridSpace& space, const Problem& problem,
                            std::unique_ptr<FitnessEngine> fleet)
-    : space_(&space), preferred_clearance_(preferred_clearance), fleet_(std::move(fleet)) {}
+    : space_(&space),
+      preferred_clearance_(fleet ? problem.fleet.preferred_clearance : 0.0),
+      turning_radius_(fleet ? problem.fleet.turning_radius : 0.0),
+      clearance_(problem.clearance),
+      fleet_(std::move(fleet)) {
+  if (turning_radius_ > 0.0) checker_ = MakeCollisionChecker(*problem.map);
+}
 
 std::optional<Path> GridPathCost::PathOf(const std::vector<Cell>& cells) const {
   if (fleet_ == nullptr || preferred_clearance_ <= 0.0) return AnyAnglePath(*space_, cells);
@@ -37,6 +43,17 @@ std::optional<Path> GridPathCost::PathOf(const std::vector<Cell>& cells) const {
 
 double GridPathCost::Cost(const Path& path) {
   return fleet_ == nullptr ? PathLength(path) : fleet_->PathTerms(path).Total();
+}
+
+GridPathCost::Judged GridPathCost::Smoothed(const Path& path) {
+  if (turning_radius_ <= 0.0) return {true, Cost(path)};
+  BoundedCurvatureOptions options;
+  options.turning_radius = turning_radius_;
+  options.clearance = clearance_;
+  const BoundedCurvatureResult smoothed = SmoothToTurningRadius(path, options, *checker_);
+  // The plan keeps the raw path when the smoothing cannot keep the clearance.
+  if (!smoothed.collision_free) return {false, Cost(path)};
+  return {smoothed.corners_over == 0, Cost(smoothed.path)};
 }
 
 double GridPathCost::operator()(const std::vector<Cell>& cells) {

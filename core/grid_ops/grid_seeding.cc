@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "absl/status/status.h"
 #include "core/grid_ops/cell_path.h"
@@ -62,24 +64,62 @@ absl::StatusOr<GridSeeds> GridSeeds::Find(const Problem& problem, const GridSpac
     std::optional<std::vector<Cell>> cells = SeedCellPath(space, moves, seed.path, context);
     if (!cells) continue;
     out.cell_paths_.push_back(*std::move(cells));
-    const double cost_of_seed = out.cost_.Cost(seed.path);
-    if (out.best_path_.empty() || cost_of_seed < out.best_cost_) {
+    const GridPathCost::Judged judged = out.cost_.Smoothed(seed.path);
+    if (out.best_path_.empty() || judged < out.best_judged_) {
       out.best_path_ = seed.path;
-      out.best_cost_ = cost_of_seed;
+      out.best_judged_ = judged;
     }
   }
   if (out.cell_paths_.empty()) {
     return absl::NotFoundError("init=seeded: no seed path from start to goal on the planning grid");
   }
+  out.best_cost_ = out.cost_.Cost(out.best_path_);
   return out;
 }
 
-bool GridSeeds::SetResult(const std::vector<Cell>& best_cells, SearchResult& result) {
-  std::optional<Path> path = cost_.PathOf(best_cells);
-  const double path_cost = path ? cost_.Cost(*path) : best_cost_;
-  const bool keep_seed = !path || path_cost >= best_cost_;
-  result.path = keep_seed ? best_path_ : *std::move(path);
-  result.fitness = keep_seed ? best_cost_ : path_cost;
+double GridSeeds::Cost(const std::vector<Cell>& cells) {
+  if (!cost_.judges_after_smoothing()) return cost_(cells);
+  std::optional<Path> path = cost_.PathOf(cells);
+  if (!path) return std::numeric_limits<double>::infinity();
+  const double cost = cost_.Cost(*path);
+  Remember(*std::move(path), cost);
+  return cost;
+}
+
+void GridSeeds::Remember(Path path, double cost) {
+  if (shortlist_.size() == kShortlist && cost >= shortlist_.back().first) return;
+  for (const auto& [kept_cost, kept] : shortlist_) {
+    if (kept_cost == cost && kept == path) return;
+  }
+  const auto at = std::upper_bound(shortlist_.begin(), shortlist_.end(), cost,
+                                   [](double c, const auto& entry) { return c < entry.first; });
+  shortlist_.insert(at, {cost, std::move(path)});
+  if (shortlist_.size() > kShortlist) shortlist_.pop_back();
+}
+
+bool GridSeeds::SetResult(const std::vector<Cell>& best_cells, const StopToken& stop,
+                          SearchResult& result) {
+  std::vector<Path> candidates;
+  if (std::optional<Path> path = cost_.PathOf(best_cells)) candidates.push_back(*std::move(path));
+  for (auto& [cost, path] : shortlist_) {
+    if (std::find(candidates.begin(), candidates.end(), path) == candidates.end()) {
+      candidates.push_back(std::move(path));
+    }
+  }
+  shortlist_.clear();
+  const Path* best = nullptr;
+  GridPathCost::Judged best_judged = best_judged_;
+  for (const Path& candidate : candidates) {
+    if (&candidate != &candidates.front() && stop.Check(0) != StopReason::kNone) break;
+    const GridPathCost::Judged judged = cost_.Smoothed(candidate);
+    if (judged < best_judged) {
+      best = &candidate;
+      best_judged = judged;
+    }
+  }
+  const bool keep_seed = best == nullptr;
+  result.fitness = keep_seed ? best_cost_ : cost_.Cost(*best);
+  result.path = keep_seed ? best_path_ : *best;
   result.found = cost_.space().PathFree(result.path);
   result.seed_path = best_path_;
   return keep_seed;

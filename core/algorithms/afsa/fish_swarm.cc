@@ -85,7 +85,7 @@ class FishSwarmSearch {
     result.best_iteration = best_iteration_;
     result.convergence = log.Take();
     if (seeds_) {
-      if (seeds_->SetResult(best_cells_, result)) result.best_iteration = 0;
+      if (seeds_->SetResult(best_cells_, stop, result)) result.best_iteration = 0;
       return result;
     }
     SetGridPath(space_, best_cells_, best_fitness_, result);

@@ -89,7 +89,7 @@ class GridAcoSearch {
     result.convergence = log.Take();
     if (!seeds_) {
       SetGridPath(space_, best_cells_, best_cost_, result);
-    } else if (seeds_->SetResult(best_cells_, result)) {
+    } else if (seeds_->SetResult(best_cells_, stop, result)) {
       result.best_iteration = 0;
     }
     return result;

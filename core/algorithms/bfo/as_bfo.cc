@@ -103,7 +103,7 @@ class AsBfoSearch {
     result.convergence = log.Take();
     if (!seeds_) {
       SetGridPath(space_, best_.cells, best_.cost, result);
-    } else if (seeds_->SetResult(best_.cells, result)) {
+    } else if (seeds_->SetResult(best_.cells, stop, result)) {
       result.best_iteration = 0;
     }
     return result;
