@@ -5,6 +5,7 @@
 // their best seed; the same seed gives the same path; init=paper still runs the paper's search.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -183,28 +184,45 @@ TEST(GridSeedingTest, ShortcutKeepingClearanceStraightensWithoutHuggingTheWalls)
   EXPECT_LT(PathLength(*taut), PathLength(*kept));
 }
 
+// What a seeded grid planner starts from: the problem's grid space, 8-connected moves with
+// line-of-sight steps, and up to three seeds (or why there are none). Neither copied nor moved:
+// the seeds refer to the space.
+struct SeededGrid {
+  explicit SeededGrid(const Problem& problem) : space(MakeGridSpace(problem, 0.0)) {
+    if (!space.ok()) {
+      seeds = space.status();
+      return;
+    }
+    moves.emplace(*space->grid, MoveRules{Neighbourhood::k8, true, 0.0});
+    seeds = GridSeeds::Find(problem, *space, *moves, 3, StopToken(), &context);
+  }
+  SeededGrid(const SeededGrid&) = delete;
+  SeededGrid& operator=(const SeededGrid&) = delete;
+
+  absl::StatusOr<GridSpace> space;
+  std::optional<GridMoves> moves;
+  GridSearchContext context;
+  absl::StatusOr<GridSeeds> seeds;
+};
+
 TEST(GridSeedingTest, SeedCellPathsAreValidMovesFromStartToGoal) {
   const Problem problem = MakeProblem(TwoDoorGrid(), {20.5, 5.5}, {20.5, 25.5});
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, 0.0);
-  ASSERT_TRUE(space.ok()) << space.status();
-  GridMoves moves(*space->grid, MoveRules{Neighbourhood::k8, true, 0.0});
-  GridSearchContext context;
-  absl::StatusOr<GridSeeds> seeds =
-      GridSeeds::Find(problem, *space, moves, 3, StopToken(), &context);
-  ASSERT_TRUE(seeds.ok()) << seeds.status();
-  ASSERT_EQ(seeds->cell_paths().size(), 2u) << "one seed per door";
+  SeededGrid grid(problem);
+  ASSERT_TRUE(grid.seeds.ok()) << grid.seeds.status();
+  ASSERT_EQ(grid.seeds->cell_paths().size(), 2u) << "one seed per door";
   absl::StatusOr<std::vector<SeedPath>> polylines = FindSeedPaths(problem, 3, StopToken());
   ASSERT_TRUE(polylines.ok());
   ASSERT_EQ(polylines->size(), 2u);
-  EXPECT_EQ(seeds->best_cost(), polylines->front().length) << "without preferences: the length";
+  EXPECT_EQ(grid.seeds->best_cost(), polylines->front().length)
+      << "without preferences: the length";
   for (size_t i = 0; i < 2; ++i) {
-    const std::vector<Cell>& cells = seeds->cell_paths()[i];
-    EXPECT_TRUE(IsValidCellPath(moves, cells));
-    EXPECT_EQ(cells.front(), space->start);
-    EXPECT_EQ(cells.back(), space->goal);
+    const std::vector<Cell>& cells = grid.seeds->cell_paths()[i];
+    EXPECT_TRUE(IsValidCellPath(*grid.moves, cells));
+    EXPECT_EQ(cells.front(), grid.space->start);
+    EXPECT_EQ(cells.back(), grid.space->goal);
     // Shortcut, the cell path bends near the corners its seed grazes, not at them: about 0.9
     // longer per door here (3 %).
-    EXPECT_LE(PathLength(*AnyAnglePath(*space, cells)), (*polylines)[i].length * 1.05);
+    EXPECT_LE(PathLength(*AnyAnglePath(*grid.space, cells)), (*polylines)[i].length * 1.05);
   }
 }
 
@@ -216,14 +234,9 @@ TEST(GridSeedingTest, TheResultIsTheBestRankedPathAfterTheSmoothing) {
   Problem problem = MakeProblem(TwoDoorGrid(), {12.5, 5.5}, {6.5, 25.5}, 0.5);
   problem.fleet.preferred_clearance = 2.5;
   problem.fleet.turning_radius = 2.0;
-  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, 0.0);
-  ASSERT_TRUE(space.ok()) << space.status();
-  GridMoves moves(*space->grid, MoveRules{Neighbourhood::k8, true, 0.0});
-  GridSearchContext context;
-  absl::StatusOr<GridSeeds> seeds =
-      GridSeeds::Find(problem, *space, moves, 3, StopToken(), &context);
-  ASSERT_TRUE(seeds.ok()) << seeds.status();
-  absl::StatusOr<GridPathCost> cost = GridPathCost::Create(problem, *space);
+  SeededGrid grid(problem);
+  ASSERT_TRUE(grid.seeds.ok()) << grid.seeds.status();
+  absl::StatusOr<GridPathCost> cost = GridPathCost::Create(problem, *grid.space);
   ASSERT_TRUE(cost.ok()) << cost.status();
 
   // The plan's judgement, independently: the smoothing the plan applies, then the objective.
@@ -248,15 +261,16 @@ TEST(GridSeedingTest, TheResultIsTheBestRankedPathAfterTheSmoothing) {
   std::vector<double> costs;
   for (const double x : {5.5, 6.0, 6.5, 7.0}) {
     const Path through = {problem.start, Point3(x, 14.0, 0), Point3(x, 17.0, 0), problem.goal};
-    std::optional<std::vector<Cell>> cells = SeedCellPath(*space, moves, through, &context);
+    std::optional<std::vector<Cell>> cells =
+        SeedCellPath(*grid.space, *grid.moves, through, &grid.context);
     ASSERT_TRUE(cells.has_value());
-    costs.push_back(seeds->Cost(*cells));
+    costs.push_back(grid.seeds->Cost(*cells));
     candidates.push_back(*std::move(cells));
   }
   const size_t worst = std::max_element(costs.begin(), costs.end()) - costs.begin();
 
   SearchResult result;
-  seeds->SetResult(candidates[worst], StopToken(), result);
+  grid.seeds->SetResult(candidates[worst], StopToken(), result);
   ASSERT_TRUE(result.found);
   Path expected = result.seed_path;
   Judged best = judge(expected);
