@@ -6,10 +6,15 @@
 #include <vector>
 
 #include "CLI/CLI.hpp"
+#include "absl/strings/str_join.h"
 #include "bench/papers/experiment.h"
+#include "bench/papers/report_stamp.h"
 
 #ifndef SWARMPLAN_SOURCE_DIR
 #error "SWARMPLAN_SOURCE_DIR must name the source tree"
+#endif
+#ifndef SWARMPLAN_BUILD_TYPE
+#error "SWARMPLAN_BUILD_TYPE must name the build type"
 #endif
 
 namespace swarmplan::bench {
@@ -48,7 +53,8 @@ int Generate(const std::vector<const Experiment*>& experiments, const std::strin
 }
 
 int Run(const std::vector<const Experiment*>& experiments, const ExperimentOptions& options,
-        const std::string& output_dir) {
+        const std::string& output_dir, const std::string& command) {
+  const std::string stamp = ReportStamp(command, SWARMPLAN_SOURCE_DIR, SWARMPLAN_BUILD_TYPE);
   for (const Experiment* experiment : experiments) {
     std::cerr << "running " << experiment->name << " (" << experiment->reproduces << ")\n";
     absl::StatusOr<std::string> report = experiment->run(options);
@@ -57,6 +63,7 @@ int Run(const std::vector<const Experiment*>& experiments, const ExperimentOptio
                 << report.status().message() << "\n";
       return kExitFailure;
     }
+    *report = InsertStamp(*report, stamp);
     if (output_dir.empty()) {
       std::cout << *report;
       continue;
@@ -126,7 +133,9 @@ int Main(int argc, char** argv) {
     experiments.push_back(experiment);
   }
   if (app.got_subcommand("generate")) return Generate(experiments, generate_dir);
-  return Run(experiments, options, output_dir);
+  std::vector<std::string> words = {"swarmplan-papers"};
+  for (int i = 1; i < argc; ++i) words.push_back(argv[i]);
+  return Run(experiments, options, output_dir, absl::StrJoin(words, " "));
 }
 
 }  // namespace

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <string>
+
+namespace swarmplan::bench {
+
+// Where a report came from, so that a reader can produce it again: the exact command, the
+// source tree's commit (and whether it had uncommitted changes) and the build type. One
+// Markdown paragraph.
+std::string ReportStamp(const std::string& command, const std::string& source_dir,
+                        const std::string& build_type);
+
+// The report with the stamp after its title line (its first line, when that is a Markdown
+// heading), or before everything else.
+std::string InsertStamp(const std::string& report, const std::string& stamp);
+
+}  // namespace swarmplan::bench
