@@ -2,7 +2,10 @@
 #include <string>
 #include <vector>
 
+#include "absl/strings/str_cat.h"
 #include "bench/papers/aem_bso_worlds_generate.h"
+#include "bench/papers/experiments.h"
+#include "bench/papers/markdown_table.h"
 #include "core/geometry/primitives.h"
 #include "core/graph/visibility_graph.h"
 #include "core/map/generate.h"
@@ -137,6 +140,32 @@ TEST(AemBsoWorldsTest, BucketedProximityCountsLikeBruteForce) {
               BruteForceViolations(world, {Point3(10, 10, 0)}, 1.5));
     const Path straight = {Point3(10, 10, 0), Point3(90, 90, 0)};
     EXPECT_EQ(proximity->CountViolations(straight), BruteForceViolations(world, straight, 1.5));
+  }
+}
+
+// The report tests its comparisons and bounds what penalised runs could do to a mean: the
+// significance and velocity-clamp sections are there, and the bound is computed from each
+// world's optimum (2x and 10x it).
+TEST(AemBsoWorldsTest, ReportTestsItsComparisons) {
+  ExperimentOptions options;
+  options.quick = true;
+  options.worlds_dir = std::string(SWARMPLAN_SOURCE_DIR) + "/bench/worlds";
+  absl::StatusOr<std::string> report = RunAemBsoWorlds(options);
+  ASSERT_TRUE(report.ok()) << report.status();
+  for (const char* section : {"## Significance: aem-bso against each planner (spline)",
+                              "## Without a velocity clamp", "| Fisher |", "| rank-sum (z) |"}) {
+    EXPECT_NE(report->find(section), std::string::npos) << section;
+  }
+  EXPECT_EQ(report->find("which we believe is the paper's mean"), std::string::npos);
+  for (const AemBsoWorldSpec& spec : AemBsoWorldSpecs()) {
+    absl::StatusOr<ShapeWorld> world = MakeAemBsoWorld(spec);
+    ASSERT_TRUE(world.ok());
+    absl::StatusOr<Path> path =
+        ShortestPathVisibility(*world, AemBsoStart(), AemBsoGoal(), kAemBsoSafeDistance, 0.01);
+    ASSERT_TRUE(path.ok());
+    const std::string bound = absl::StrCat(spec.name, " ", NumberCell(2 * PathLength(*path)),
+                                           " and ", NumberCell(10 * PathLength(*path)));
+    EXPECT_NE(report->find(bound), std::string::npos) << bound;
   }
 }
 
