@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "absl/strings/str_format.h"
+#include "bench/statistics.h"
 #include "core/random.h"
 
 namespace swarmplan::bench {
@@ -49,15 +50,6 @@ double Quantile(const std::vector<double>& sorted, double q) {
   const size_t below = static_cast<size_t>(std::floor(position));
   const size_t above = std::min(below + 1, sorted.size() - 1);
   return sorted[below] + (position - below) * (sorted[above] - sorted[below]);
-}
-
-double MedianInPlace(std::vector<double>& values) {
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  const double upper = values[mid];
-  if (values.size() % 2 == 1) return upper;
-  const double lower = *std::max_element(values.begin(), values.begin() + mid);
-  return lower + (upper - lower) / 2;
 }
 
 }  // namespace
@@ -139,7 +131,7 @@ std::optional<Interval> BootstrapMedianInterval(const std::vector<double>& value
   std::vector<double> resample(values.size()), medians(resamples);
   for (double& median : medians) {
     for (double& v : resample) v = values[rng.UniformInt(0, last)];
-    median = MedianInPlace(resample);
+    median = *Median(resample);
   }
   std::sort(medians.begin(), medians.end());
   const double tail = 0.5 * (1.0 - confidence);
