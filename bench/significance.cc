@@ -36,6 +36,16 @@ std::vector<double> RankSumCounts(int m, int n) {
   return previous[n];
 }
 
+// The number of subsets of the ranks 1..n whose sum is v, for every v in [0, n (n + 1) / 2].
+std::vector<double> SignedRankCounts(int n) {
+  std::vector<double> counts(static_cast<size_t>(n) * (n + 1) / 2 + 1, 0.0);
+  counts[0] = 1.0;
+  for (int rank = 1, largest = 0; rank <= n; largest += rank, ++rank) {
+    for (int v = largest; v >= 0; --v) counts[v + rank] += counts[v];
+  }
+  return counts;
+}
+
 bool AllFinite(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
@@ -97,6 +107,52 @@ std::optional<RankSumTest> MannWhitneyU(const std::vector<double>& a,
   if (!(variance > 0.0)) return result;  // every value equal: no evidence of a difference
   const double deviation = std::abs(result.u - 0.5 * mn) - 0.5;
   const double z = std::max(0.0, deviation) / std::sqrt(variance);
+  result.p_value = std::min(1.0, std::erfc(z / std::sqrt(2.0)));
+  return result;
+}
+
+std::optional<SignedRankTest> WilcoxonSignedRank(const std::vector<double>& a,
+                                                 const std::vector<double>& b) {
+  if (a.empty() || a.size() != b.size() || !AllFinite(a) || !AllFinite(b)) return std::nullopt;
+  std::vector<double> differences;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i] != b[i]) differences.push_back(a[i] - b[i]);
+  }
+  SignedRankTest result;
+  const int n = static_cast<int>(differences.size());
+  result.pairs = n;
+  if (n == 0) return result;
+  std::sort(differences.begin(), differences.end(),
+            [](double x, double y) { return std::abs(x) < std::abs(y); });
+  double tie_term = 0.0;
+  bool ties = false;
+  for (int i = 0; i < n;) {
+    int j = i;
+    while (j < n && std::abs(differences[j]) == std::abs(differences[i])) ++j;
+    const double midrank = 0.5 * (i + 1 + j);
+    for (int k = i; k < j; ++k) {
+      if (differences[k] > 0) result.v += midrank;
+    }
+    const double t = j - i;
+    tie_term += t * t * t - t;
+    ties = ties || t > 1;
+    i = j;
+  }
+  if (!ties && n <= kExactSignedRankPairs) {
+    const std::vector<double> counts = SignedRankCounts(n);
+    const double all = std::ldexp(1.0, n);
+    const int v = static_cast<int>(std::lround(result.v));
+    double at_most = 0.0, at_least = 0.0;
+    for (int k = 0; k <= v; ++k) at_most += counts[k];
+    for (size_t k = v; k < counts.size(); ++k) at_least += counts[k];
+    result.p_value = std::min(1.0, 2.0 * std::min(at_most, at_least) / all);
+    result.exact = true;
+    return result;
+  }
+  const double mean = n * (n + 1.0) / 4.0;
+  const double variance = n * (n + 1.0) * (2.0 * n + 1.0) / 24.0 - tie_term / 48.0;
+  if (!(variance > 0.0)) return result;
+  const double z = std::max(0.0, std::abs(result.v - mean) - 0.5) / std::sqrt(variance);
   result.p_value = std::min(1.0, std::erfc(z / std::sqrt(2.0)));
   return result;
 }

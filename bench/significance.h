@@ -24,6 +24,22 @@ struct RankSumTest {
 inline constexpr int kExactRankSumValues = 60;
 std::optional<RankSumTest> MannWhitneyU(const std::vector<double>& a, const std::vector<double>& b);
 
+// Wilcoxon signed-rank test of paired samples, two-sided: whether the differences a[i] - b[i]
+// tend to be positive or negative (e.g. two planners' median lengths on the same worlds).
+// Zero differences are dropped (as R's wilcox.test). The exact distribution of V when the
+// remaining differences are untied and at most kExactSignedRankPairs; otherwise the normal
+// approximation with the tie correction and a continuity correction of 1/2. nullopt when the
+// samples differ in size, are empty or hold a value that is not finite.
+struct SignedRankTest {
+  double v = 0.0;        // the sum of the ranks of |a[i] - b[i]| over the positive differences
+  int pairs = 0;         // pairs with a nonzero difference
+  double p_value = 1.0;  // two-sided; 1 when every difference is zero
+  bool exact = false;
+};
+inline constexpr int kExactSignedRankPairs = 50;
+std::optional<SignedRankTest> WilcoxonSignedRank(const std::vector<double>& a,
+                                                 const std::vector<double>& b);
+
 // Fisher's exact test on the 2 x 2 table of successes and failures of two samples, two-sided: the
 // probability, under equal success rates and the observed margins, of a table no more likely
 // than the observed one (relative tolerance 1e-7, as R and SciPy). nullopt when a count is

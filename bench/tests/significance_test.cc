@@ -103,6 +103,68 @@ TEST(MannWhitneyUTest, RefusesEmptyOrNonFiniteSamples) {
   EXPECT_FALSE(MannWhitneyU({1.0}, {INFINITY}).has_value());
 }
 
+TEST(WilcoxonSignedRankTest, ExactPValueOfRsPublishedExample) {
+  // R's wilcox.test paired example (Hollander & Wolfe, depression scale before and after
+  // therapy): V = 40, one-sided p = 0.01953, so two-sided 10 / 256.
+  const std::vector<double> before = {1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
+  const std::vector<double> after = {0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29};
+  std::optional<SignedRankTest> test = WilcoxonSignedRank(before, after);
+  ASSERT_TRUE(test.has_value());
+  EXPECT_TRUE(test->exact);
+  EXPECT_EQ(test->pairs, 9);
+  EXPECT_DOUBLE_EQ(test->v, 40.0);
+  EXPECT_NEAR(test->p_value, 10.0 / 256.0, 1e-12);
+  test = WilcoxonSignedRank(after, before);
+  ASSERT_TRUE(test.has_value());
+  EXPECT_DOUBLE_EQ(test->v, 45.0 - 40.0);
+  EXPECT_NEAR(test->p_value, 10.0 / 256.0, 1e-12);
+}
+
+TEST(WilcoxonSignedRankTest, ExactPValueCountsEverySignAssignment) {
+  Rng rng(7);
+  for (int n : {1, 4, 8, 11}) {
+    std::vector<double> a(n), b(n, 0.0);
+    for (double& v : a) v = rng.Uniform(-1.0, 1.0);
+    const std::optional<SignedRankTest> test = WilcoxonSignedRank(a, b);
+    ASSERT_TRUE(test.has_value());
+    ASSERT_TRUE(test->exact);
+    // Under the null every assignment of signs to the ranks 1..n is equally likely: count
+    // those whose V lies as far from its mean as the observed one.
+    const double mean = n * (n + 1) / 4.0;
+    int as_extreme = 0;
+    for (int signs = 0; signs < (1 << n); ++signs) {
+      double v = 0.0;
+      for (int rank = 1; rank <= n; ++rank) {
+        if (signs & (1 << (rank - 1))) v += rank;
+      }
+      if (std::abs(v - mean) >= std::abs(test->v - mean) - 1e-9) ++as_extreme;
+    }
+    EXPECT_NEAR(test->p_value, static_cast<double>(as_extreme) / (1 << n), 1e-12) << n;
+  }
+}
+
+TEST(WilcoxonSignedRankTest, TiesAndZerosUseTheCorrectedNormalApproximation) {
+  // Differences 1, 2, 2, -3, 4 and a zero that is dropped: midranks 1, 2.5, 2.5, 4, 5, V = 11;
+  // mean 7.5, variance 5 * 6 * 11 / 24 - (2^3 - 2) / 48 = 13.625, z = (3.5 - 0.5) / sqrt(13.625).
+  const std::optional<SignedRankTest> test =
+      WilcoxonSignedRank({1, 2, 2, 0, 4, 7}, {0, 0, 0, 3, 0, 7});
+  ASSERT_TRUE(test.has_value());
+  EXPECT_FALSE(test->exact);
+  EXPECT_EQ(test->pairs, 5);
+  EXPECT_DOUBLE_EQ(test->v, 11.0);
+  EXPECT_NEAR(test->p_value, 0.4163656779081653, 1e-12);
+}
+
+TEST(WilcoxonSignedRankTest, NoDifferencesAndBadSamples) {
+  const std::optional<SignedRankTest> equal = WilcoxonSignedRank({1, 2, 3}, {1, 2, 3});
+  ASSERT_TRUE(equal.has_value());
+  EXPECT_EQ(equal->pairs, 0);
+  EXPECT_DOUBLE_EQ(equal->p_value, 1.0);
+  EXPECT_FALSE(WilcoxonSignedRank({}, {}).has_value());
+  EXPECT_FALSE(WilcoxonSignedRank({1, 2}, {1}).has_value());
+  EXPECT_FALSE(WilcoxonSignedRank({1, std::nan("")}, {1, 2}).has_value());
+}
+
 TEST(FisherExactTest, PublishedExamples) {
   // The lady tasting tea: 3 of 4 against 1 of 4, p = 34 / 70.
   EXPECT_NEAR(*FisherExactTwoSided(3, 4, 1, 4), 34.0 / 70.0, 1e-12);
