@@ -15,6 +15,9 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "bench/papers/aem_bso_worlds_generate.h"
+#include "bench/papers/aem_bso_worlds_replicated.h"
+#include "bench/papers/aem_bso_worlds_runs.h"
+#include "bench/papers/comparison.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
 #include "bench/papers/plan_once.h"
@@ -30,15 +33,19 @@ using aem_bso::AemBsoGoal;
 using aem_bso::AemBsoStart;
 using aem_bso::AemBsoWorldSpec;
 using aem_bso::AemBsoWorldSpecs;
+using aem_bso::CellStats;
+using aem_bso::ExactOptimum;
 using aem_bso::kAemBsoSafeDistance;
+using aem_bso::kPopulation;
+using aem_bso::PaperPlan;
+using aem_bso::RunCell;
 
 constexpr int kDefaultRuns = 30;
 constexpr int kIterations = 500;
 constexpr int kQuickRuns = 2;
 constexpr int kQuickIterations = 20;
-constexpr int kPopulation = 100;
-constexpr double kPenalty = 100.0;
-constexpr double kPaperFactor = 1.49;  // c1 = c2 (= c3) of every swarm in the paper
+constexpr int kReplicatedRuns = 10;  // per world of the ten-world Table 3
+constexpr int kQuickReplicatedWorlds = 2;
 // velocity_fraction for the runs without a velocity clamp: ten times the span of the box, more
 // than any step can use.
 constexpr double kUnclampedVelocity = 10.0;
@@ -102,16 +109,6 @@ std::optional<PaperCell> PaperTable3(const std::string& world, const std::string
   return it->second;
 }
 
-// What the runs of one planner x interpolation on one world gave.
-struct CellStats {
-  int runs = 0;
-  std::vector<double> lengths;    // of the runs that found a path (xi = 0)
-  std::vector<double> fitnesses;  // z = L (1 + M xi) of every run
-  std::vector<double> seconds;    // wall time of every run
-  std::vector<double> cpu_seconds;
-  std::vector<double> best_iterations;
-};
-
 struct WorldRun {
   AemBsoWorldSpec spec;
   double optimum = 0.0;
@@ -120,54 +117,6 @@ struct WorldRun {
   std::map<std::string, CellStats> unclamped;  // VelocityPlanners() with the spline, no clamp
 };
 
-// The paper's run of `planner` with `interpolation` (its factors for PSO).
-PlanSpec PaperPlan(const std::string& planner, const std::string& interpolation, int iterations) {
-  PlanSpec plan{planner,
-                {{"init", std::string("paper")},
-                 {"interpolation", interpolation},
-                 {"iterations", int64_t{iterations}},
-                 {"population", int64_t{kPopulation}},
-                 {"penalty", kPenalty},
-                 {"d_safe", kAemBsoSafeDistance}},
-                "none",
-                iterations,
-                kAemBsoSafeDistance};
-  if (planner == "pso") {  // the paper's PSO factors (section 3); our default is 2
-    plan.params["c1"] = kPaperFactor;
-    plan.params["c2"] = kPaperFactor;
-  }
-  return plan;
-}
-
-// `runs` runs of `plan` from options.seed on, every found path checked.
-absl::StatusOr<CellStats> RunCell(const PlanSpec& plan, const MapPtr& map, const Point3& start,
-                                  const Point3& goal, const ExperimentOptions& options, int runs,
-                                  const std::string& what) {
-  CellStats cell;
-  for (int run = 0; run < runs; ++run) {
-    const uint64_t seed = options.seed + static_cast<uint64_t>(run);
-    absl::StatusOr<PlanResult> result = PlanOnce(plan, map, start, goal, seed);
-    if (!result.ok()) return result.status();
-    if (absl::Status s = CheckFoundPath(*result, start, goal, absl::StrCat(what, " seed ", seed));
-        !s.ok()) {
-      return s;
-    }
-    ++cell.runs;
-    if (result->found) cell.lengths.push_back(result->raw_metrics.length);
-    cell.fitnesses.push_back(result->fitness);
-    cell.seconds.push_back(absl::ToDoubleSeconds(result->wall_time));
-    cell.cpu_seconds.push_back(absl::ToDoubleSeconds(result->cpu_time));
-    cell.best_iterations.push_back(result->best_iteration);
-  }
-  if (options.log != nullptr) {
-    *options.log << absl::StrFormat(
-        "aem-bso-worlds: %s: %d/%d found, best %s, mean %s, %.2f s/run\n", what,
-        static_cast<int>(cell.lengths.size()), cell.runs, NumberCell(Min(cell.lengths)),
-        NumberCell(Mean(cell.lengths)), Mean(cell.seconds).value_or(0.0));
-  }
-  return cell;
-}
-
 absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentOptions& options,
                                   int runs, int iterations) {
   const std::string path =
@@ -175,27 +124,17 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
   absl::StatusOr<Map> loaded = LoadMapFile(path, "shapes-json");
   if (!loaded.ok()) return loaded.status();
   const MapPtr map = std::make_shared<const Map>(*std::move(loaded));
-  const Point3 start(AemBsoStart().x(), AemBsoStart().y(), 0.0);
-  const Point3 goal(AemBsoGoal().x(), AemBsoGoal().y(), 0.0);
-
   WorldRun out;
   out.spec = spec;
   out.straight = (AemBsoGoal() - AemBsoStart()).norm();
-  PlanSpec exact{"visibility-graph", {}, "none", 0, kAemBsoSafeDistance};
-  absl::StatusOr<PlanResult> optimum = PlanOnce(exact, map, start, goal, options.seed);
+  absl::StatusOr<double> optimum = ExactOptimum(map, options.seed, path);
   if (!optimum.ok()) return optimum.status();
-  if (!optimum->found) {
-    return absl::FailedPreconditionError(absl::StrCat(path, ": no path keeps d_safe"));
-  }
-  if (absl::Status s = CheckFoundPath(*optimum, start, goal, "visibility-graph"); !s.ok()) {
-    return s;
-  }
-  out.optimum = optimum->raw_metrics.length;
+  out.optimum = *optimum;
 
   for (const std::string& planner : Planners()) {
     for (const std::string& interpolation : Interpolations()) {
       absl::StatusOr<CellStats> cell =
-          RunCell(PaperPlan(planner, interpolation, iterations), map, start, goal, options, runs,
+          RunCell(PaperPlan(planner, interpolation, iterations), map, options, runs,
                   absl::StrCat(spec.name, " ", planner, "/", interpolation));
       if (!cell.ok()) return cell.status();
       out.cells[{planner, interpolation}] = *std::move(cell);
@@ -204,8 +143,8 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
   for (const std::string& planner : VelocityPlanners()) {
     PlanSpec plan = PaperPlan(planner, "spline", iterations);
     plan.params["velocity_fraction"] = kUnclampedVelocity;
-    absl::StatusOr<CellStats> cell = RunCell(plan, map, start, goal, options, runs,
-                                             absl::StrCat(spec.name, " ", planner, " unclamped"));
+    absl::StatusOr<CellStats> cell =
+        RunCell(plan, map, options, runs, absl::StrCat(spec.name, " ", planner, " unclamped"));
     if (!cell.ok()) return cell.status();
     out.unclamped[planner] = *std::move(cell);
   }
@@ -252,39 +191,6 @@ std::string FoundCell(const CellStats& cell) {
   return absl::StrCat(cell.lengths.size(), "/", cell.runs);
 }
 
-// The median and its bootstrap 95 % interval, e.g. "117.2 [116.3, 118.0]".
-std::string MedianWithInterval(const std::vector<double>& values) {
-  const std::optional<double> median = Median(values);
-  const std::optional<Interval> interval = BootstrapMedianInterval(values);
-  if (!median.has_value() || !interval.has_value()) return "–";
-  return absl::StrCat(NumberCell(*median), " [", NumberCell(interval->low), ", ",
-                      NumberCell(interval->high), "]");
-}
-
-std::optional<double> RankSumP(const std::vector<double>& a, const std::vector<double>& b) {
-  const std::optional<RankSumTest> test = MannWhitneyU(a, b);
-  if (!test.has_value()) return std::nullopt;
-  return test->p_value;
-}
-
-std::optional<double> FoundP(const CellStats& a, const CellStats& b) {
-  return FisherExactTwoSided(static_cast<int>(a.lengths.size()), a.runs,
-                             static_cast<int>(b.lengths.size()), b.runs);
-}
-
-std::string PCell(std::optional<double> p) { return p.has_value() ? FormatPValue(*p) : "–"; }
-
-// One significant difference of `other` from aem-bso, e.g. "pso's z higher (p = 0.003)"; empty
-// when p >= kSignificanceLevel.
-std::string Difference(const std::string& other, const std::string& what,
-                       const std::vector<double>& aem, const std::vector<double>& theirs,
-                       std::optional<double> p) {
-  if (!p.has_value() || *p >= kSignificanceLevel) return "";
-  const bool higher = Median(theirs).value_or(0.0) > Median(aem).value_or(0.0);
-  return absl::StrCat(other, "'s ", what, higher ? " higher" : " lower", " (",
-                      FormatPValue(*p, /*mark_significant=*/false), ")");
-}
-
 // aem-bso with the spline against each planner with the spline, and the significant
 // differences per world, e.g. "simple: pso's z higher (p = 0.003); complex: none".
 std::string SignificanceSection(const std::vector<WorldRun>& worlds, std::string* summary) {
@@ -309,22 +215,17 @@ std::string SignificanceSection(const std::vector<WorldRun>& worlds, std::string
                       "", MedianWithInterval(cell.lengths), ""});
         continue;
       }
-      const std::optional<double> found_p = FoundP(aem, cell);
+      const std::optional<double> found_p = SuccessP(aem.Found(), cell.Found());
       const std::optional<double> z_p = RankSumP(aem.fitnesses, cell.fitnesses);
       const std::optional<double> length_p = RankSumP(aem.lengths, cell.lengths);
-      table.AddRow({w.spec.name, planner, FoundCell(cell), PCell(found_p),
-                    MedianWithInterval(cell.fitnesses), PCell(z_p),
-                    MedianWithInterval(cell.lengths), PCell(length_p)});
-      if (found_p.has_value() && *found_p < kSignificanceLevel) {
-        absl::StrAppend(&differences, differences.empty() ? "" : ", ", planner, " found ",
-                        cell.lengths.size() > aem.lengths.size() ? "more" : "fewer", " (",
-                        FormatPValue(*found_p, /*mark_significant=*/false), ")");
-      }
-      for (const std::string& d :
-           {Difference(planner, "z", aem.fitnesses, cell.fitnesses, z_p),
-            Difference(planner, "length", aem.lengths, cell.lengths, length_p)}) {
-        if (!d.empty()) absl::StrAppend(&differences, differences.empty() ? "" : ", ", d);
-      }
+      table.AddRow({w.spec.name, planner, FoundCell(cell), PValueCell(found_p),
+                    MedianWithInterval(cell.fitnesses), PValueCell(z_p),
+                    MedianWithInterval(cell.lengths), PValueCell(length_p)});
+      AppendListItem(&differences, SuccessDifference(planner, aem.Found(), cell.Found(), found_p));
+      AppendListItem(&differences,
+                     ValueDifference(planner, "z", aem.fitnesses, cell.fitnesses, z_p));
+      AppendListItem(&differences,
+                     ValueDifference(planner, "length", aem.lengths, cell.lengths, length_p));
     }
     absl::StrAppend(summary, summary->empty() ? "" : "; ", w.spec.name, ": ",
                     differences.empty() ? "none" : differences);
@@ -361,7 +262,7 @@ std::string VelocityClampSection(const std::vector<WorldRun>& worlds, std::strin
         table.AddRow({w.spec.name, planner, free ? "unclamped" : "clamped (20 %)", FoundCell(c),
                       NumberCell(Min(c.lengths)), NumberCell(Mean(c.lengths)),
                       NumberCell(StdDev(c.lengths)), NumberCell(Mean(c.fitnesses)),
-                      free ? PCell(p) : "", PaperNumber(paper, &PaperCell::shortest),
+                      free ? PValueCell(p) : "", PaperNumber(paper, &PaperCell::shortest),
                       PaperNumber(paper, &PaperCell::mean),
                       PaperNumber(paper, &PaperCell::std_dev)});
       }
@@ -393,7 +294,8 @@ std::string VelocityClampSection(const std::vector<WorldRun>& worlds, std::strin
 }
 
 std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
-                       const std::string& significant, const std::string& velocity) {
+                       const std::string& significant, const std::string& replicated,
+                       const std::string& velocity) {
   std::string out = "## Discussion\n\n";
   for (const WorldRun& w : worlds) {
     const CellStats& aem = w.cells.at({"aem-bso", "spline"});
@@ -519,7 +421,7 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       ranked,
       ". The paper's ranking by mean is AEM-BSO, BSO, BA, PSO in both worlds. Differences from "
       "aem-bso that the significance tests support (p < 0.05): ",
-      significant,
+      significant, ". ", replicated,
       ". A ranking that no test supports is the runs' scatter, whatever the means say. The "
       "shortest path of any planner with the spline or linear interpolation is ",
       closest,
@@ -574,8 +476,14 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
   return out;
 }
 
-std::string Report(const std::vector<WorldRun>& worlds, const ExperimentOptions& options, int runs,
-                   int iterations) {
+// The ten-world Table 3 and what of it the tests support.
+struct Replication {
+  std::vector<aem_bso::ReplicatedEnvironment> environments;
+  int runs = 0;
+};
+
+std::string Report(const std::vector<WorldRun>& worlds, const Replication& replication,
+                   const ExperimentOptions& options, int runs, int iterations) {
   std::string out = "# AEM-BSO Tables 2-3: path planning on 100 x 100 worlds with circles\n\n";
   absl::StrAppend(
       &out,
@@ -696,10 +604,18 @@ std::string Report(const std::vector<WorldRun>& worlds, const ExperimentOptions&
     }
   }
   absl::StrAppend(&out, others.ToString(), "\n");
-  std::string significant, velocity;
+  std::string significant, velocity, replicated;
   absl::StrAppend(&out, SignificanceSection(worlds, &significant));
+  absl::StrAppend(&out, aem_bso::ReplicatedSection(replication.environments, Planners(), "aem-bso",
+                                                   replication.runs, options.seed, &replicated));
   absl::StrAppend(&out, VelocityClampSection(worlds, &velocity));
-  absl::StrAppend(&out, Discussion(worlds, iterations, significant, velocity));
+  const size_t drawn =
+      replication.environments.empty() ? 0 : replication.environments[0].worlds.size();
+  replicated = absl::StrCat("With every environment drawn ", drawn, " times (*Table 3 on ", drawn,
+                            " worlds per environment* above), the differences from aem-bso "
+                            "that the tests support are: ",
+                            replicated);
+  absl::StrAppend(&out, Discussion(worlds, iterations, significant, replicated, velocity));
   return out;
 }
 
@@ -714,7 +630,16 @@ absl::StatusOr<std::string> RunAemBsoWorlds(const ExperimentOptions& options) {
     if (!world.ok()) return world.status();
     worlds.push_back(*std::move(world));
   }
-  return Report(worlds, options, runs, iterations);
+  Replication replication;
+  replication.runs = options.quick ? kQuickRuns : kReplicatedRuns;
+  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : aem_bso::kReplicatedWorlds;
+  for (const AemBsoWorldSpec& spec : AemBsoWorldSpecs()) {
+    absl::StatusOr<aem_bso::ReplicatedEnvironment> environment = aem_bso::RunReplicatedEnvironment(
+        spec, Planners(), options, replicated_worlds, replication.runs, iterations);
+    if (!environment.ok()) return environment.status();
+    replication.environments.push_back(*std::move(environment));
+  }
+  return Report(worlds, replication, options, runs, iterations);
 }
 
 absl::Status GenerateAemBsoWorlds(const std::string& dir) {
