@@ -18,6 +18,9 @@ struct ExperimentOptions {
   // A few runs of a few iterations: checks that every row of the report is produced and every
   // path is valid, quickly. Its numbers say nothing about the planners.
   bool quick = false;
+  // Threads an experiment may spread its independent runs over; the report does not depend on
+  // it (only its times do).
+  int jobs = 1;
   std::string worlds_dir;       // bench/worlds of the source tree: the shipped, generated worlds
   std::ostream* log = nullptr;  // progress lines; may be null
 };

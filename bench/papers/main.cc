@@ -99,6 +99,10 @@ int Main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   run->add_flag("--quick", options.quick,
                 "A few short runs: checks the pipeline; the numbers mean nothing.");
+  run->add_option("--jobs", options.jobs,
+                  "Threads for an experiment's independent runs (those that support it); the "
+                  "report is the same for any number.")
+      ->check(CLI::Range(1, 64));
   run->add_option("--worlds-dir", options.worlds_dir, "Where the shipped worlds are.");
   run->add_option("--output-dir", output_dir,
                   "Write each report to DIR/<results file> instead of standard output.");
