@@ -465,8 +465,10 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       "gave 122.6 and 126.7 and one penalised run. The swarms presumably all settle on one way "
       "around the circles while the optimum takes another, narrower one that their "
       "initialisation rarely samples; so the yardstick shows a gap that neither the paper's "
-      "tables nor the comparison between planners could reveal, and it is a gap of "
-      "all of them. Runs find their final best late (*best iter* of aem-bso with the spline: ",
+      "tables nor the comparison between planners could reveal. It is a gap of all of them; "
+      "how much it depends on the world, the drawn worlds show (the per-world medians of "
+      "*Table 3 on 10 worlds per environment*, and aem-bso's range above). Runs find their final "
+      "best late (*best iter* of aem-bso with the spline: ",
       late, " of ", iterations,
       "), so the swarms have not fully converged at the end. The paper is also not "
       "self-consistent: AEM-BSO with the spline has mean 146.29 in Table 2 and 121.65 in Table "

@@ -1,5 +1,6 @@
 #include "bench/papers/aem_bso_worlds_replicated.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -14,12 +15,8 @@
 namespace swarmplan::bench::aem_bso {
 namespace {
 
-std::vector<double> OverOptimum(const std::vector<double>& values, double optimum) {
-  std::vector<double> out;
-  out.reserve(values.size());
-  for (double v : values) out.push_back(v / optimum);
-  return out;
-}
+// A per-world median length counts as within 1 % of the optimum up to this ratio.
+constexpr double kNearOptimum = 1.01;
 
 // What a planner's runs on every world of an environment gave, in units of each world's
 // optimum.
@@ -36,19 +33,13 @@ Pooled Pool(const ReplicatedEnvironment& environment, const std::string& planner
     const CellStats& cell = world.cells.at(planner);
     out.found.successes += cell.found();
     out.found.runs += cell.runs;
-    for (double r : OverOptimum(cell.lengths, world.optimum)) out.length_ratios.push_back(r);
-    out.median_z_ratios.push_back(Median(OverOptimum(cell.fitnesses, world.optimum)).value_or(0.0));
-    if (const std::optional<double> m = Median(OverOptimum(cell.lengths, world.optimum))) {
+    for (double r : DividedBy(cell.lengths, world.optimum)) out.length_ratios.push_back(r);
+    out.median_z_ratios.push_back(Median(DividedBy(cell.fitnesses, world.optimum)).value_or(0.0));
+    if (const std::optional<double> m = Median(DividedBy(cell.lengths, world.optimum))) {
       out.median_length_ratios.push_back(*m);
     }
   }
   return out;
-}
-
-std::optional<double> SignedRankP(const std::vector<double>& a, const std::vector<double>& b) {
-  const std::optional<SignedRankTest> test = WilcoxonSignedRank(a, b);
-  if (!test.has_value()) return std::nullopt;
-  return test->p_value;
 }
 
 // Worlds in which `theirs` has the lower per-world median, e.g. "3/10".
@@ -73,7 +64,7 @@ std::string WorldsTable(const std::vector<ReplicatedEnvironment>& environments,
       for (const std::string& planner : planners) {
         const CellStats& cell = world.cells.at(planner);
         row.push_back(absl::StrCat(cell.found(), "/", cell.runs, " · ",
-                                   NumberCell(Median(OverOptimum(cell.lengths, world.optimum)))));
+                                   NumberCell(Median(DividedBy(cell.lengths, world.optimum)))));
       }
       table.AddRow(std::move(row));
     }
@@ -182,9 +173,12 @@ std::string ReplicatedSection(const std::vector<ReplicatedEnvironment>& environm
         absl::StrCat(
             environment.name, " (", reference, "'s median length / optimum per world ",
             NumberCell(Min(base.median_length_ratios)), "-",
-            NumberCell(Max(base.median_length_ratios)), ", the shipped world ",
-            NumberCell(Median(OverOptimum(environment.worlds.front().cells.at(reference).lengths,
-                                          environment.worlds.front().optimum))),
+            NumberCell(Max(base.median_length_ratios)), ", within 1 % of the optimum in ",
+            std::count_if(base.median_length_ratios.begin(), base.median_length_ratios.end(),
+                          [](double r) { return r <= kNearOptimum; }),
+            " of ", base.median_length_ratios.size(), " worlds, the shipped world ",
+            NumberCell(Median(DividedBy(environment.worlds.front().cells.at(reference).lengths,
+                                        environment.worlds.front().optimum))),
             "): ", differences.empty() ? "none" : differences),
         "; ");
   }

@@ -22,6 +22,19 @@ std::optional<double> RankSumP(const std::vector<double>& a, const std::vector<d
   return test->p_value;
 }
 
+std::optional<double> SignedRankP(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::optional<SignedRankTest> test = WilcoxonSignedRank(a, b);
+  if (!test.has_value()) return std::nullopt;
+  return test->p_value;
+}
+
+std::vector<double> DividedBy(const std::vector<double>& values, double divisor) {
+  std::vector<double> out;
+  out.reserve(values.size());
+  for (double v : values) out.push_back(v / divisor);
+  return out;
+}
+
 std::optional<double> SuccessP(const SuccessCount& a, const SuccessCount& b) {
   return FisherExactTwoSided(a.successes, a.runs, b.successes, b.runs);
 }

@@ -23,6 +23,13 @@ std::string MedianWithInterval(const std::vector<double>& values, int significan
 // The two-sided Mann-Whitney p-value of `a` against `b`; nullopt when a sample is empty.
 std::optional<double> RankSumP(const std::vector<double>& a, const std::vector<double>& b);
 
+// The two-sided Wilcoxon signed-rank p-value of the pairs (a[i], b[i]); nullopt when the sizes
+// differ or a sample is empty.
+std::optional<double> SignedRankP(const std::vector<double>& a, const std::vector<double>& b);
+
+// Every value divided by `divisor`, e.g. lengths over a world's optimum, so worlds can be pooled.
+std::vector<double> DividedBy(const std::vector<double>& values, double divisor);
+
 // Fisher's exact p-value on the success counts of `a` and `b`.
 std::optional<double> SuccessP(const SuccessCount& a, const SuccessCount& b);
 
