@@ -27,6 +27,12 @@ Cell IdafsaStart(const IdafsaGridWorld&) { return Cell{0, 0}; }
 Cell IdafsaGoal(const IdafsaGridWorld& world) { return Cell{world.size - 1, world.size - 1}; }
 
 absl::StatusOr<OccupancyGrid> GenerateIdafsaGrid(const IdafsaGridWorld& world) {
+  absl::StatusOr<DrawnIdafsaGrid> drawn = DrawIdafsaGrid(world);
+  if (!drawn.ok()) return drawn.status();
+  return std::move(drawn->grid);
+}
+
+absl::StatusOr<DrawnIdafsaGrid> DrawIdafsaGrid(const IdafsaGridWorld& world) {
   RandomGridOptions options;
   options.width = world.size;
   options.height = world.size;
@@ -42,9 +48,10 @@ absl::StatusOr<OccupancyGrid> GenerateIdafsaGrid(const IdafsaGridWorld& world) {
   }
   constexpr int kMaxTries = 1000;
   for (int i = 0; i < kMaxTries; ++i) {
-    absl::StatusOr<OccupancyGrid> grid = RandomGrid(options, world.seed + i);
+    const uint64_t seed = world.seed + i;
+    absl::StatusOr<OccupancyGrid> grid = RandomGrid(options, seed);
     if (!grid.ok()) return grid.status();
-    if (FourConnected(*grid, start, goal)) return grid;
+    if (FourConnected(*grid, start, goal)) return DrawnIdafsaGrid{*std::move(grid), seed};
   }
   return absl::InternalError(absl::StrCat(world.file, ": no seed from ", world.seed, " in ",
                                           kMaxTries, " joins start and goal"));

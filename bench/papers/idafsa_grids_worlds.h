@@ -35,6 +35,13 @@ Cell IdafsaGoal(const IdafsaGridWorld& world);
 // world.seed (at most 1000 tried) whose start and goal are joined by 4-connected free cells.
 absl::StatusOr<OccupancyGrid> GenerateIdafsaGrid(const IdafsaGridWorld& world);
 
+// The same grid with the seed it was drawn from.
+struct DrawnIdafsaGrid {
+  OccupancyGrid grid;
+  uint64_t seed = 0;
+};
+absl::StatusOr<DrawnIdafsaGrid> DrawIdafsaGrid(const IdafsaGridWorld& world);
+
 // Whether free cells joined by orthogonal steps lead from a to b.
 bool FourConnected(const OccupancyGrid& grid, Cell a, Cell b);
 

@@ -1,0 +1,55 @@
+#pragma once
+
+// The IDAFSA reproduction's planners on ten drawn worlds per grid size instead of one: per world,
+// pooled and paired across worlds, so a difference between planners is told apart from a
+// property of one world.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "bench/papers/experiment.h"
+#include "bench/papers/idafsa_grids_runs.h"
+#include "bench/papers/idafsa_grids_worlds.h"
+
+namespace swarmplan::bench {
+
+inline constexpr int kIdafsaReplicatedWorlds = 10;
+// World r of a grid size draws from seed world.seed + r * kIdafsaWorldSeedStride on: far enough
+// apart (GenerateIdafsaGrid tries at most 1000 seeds) that no two worlds share a draw.
+inline constexpr uint64_t kIdafsaWorldSeedStride = 1000;
+
+// World `index` of the grid size of `shipped`; index 0 is the shipped world's spec.
+IdafsaGridWorld ReplicatedIdafsaWorld(const IdafsaGridWorld& shipped, int index);
+
+// One drawn world and the runs of every configuration on it.
+struct ReplicatedIdafsaWorldRuns {
+  IdafsaGridWorld spec;
+  uint64_t seed_drawn = 0;
+  int blocked = 0;
+  double optimum = 0.0;               // the shortest path of segment-checked 24-neighbourhood moves
+  double theta_star = 0.0;            // Theta*'s any-angle path
+  std::vector<FishRunStats> configs;  // as the configurations
+};
+
+struct ReplicatedIdafsaGrid {
+  int size = 0;
+  std::vector<ReplicatedIdafsaWorldRuns> worlds;
+};
+
+// `worlds` worlds of the grid size of `shipped`, drawn in memory, each configuration run `runs`
+// times (seeds options.seed ... options.seed + runs - 1) for `generations` generations on each.
+absl::StatusOr<ReplicatedIdafsaGrid> RunReplicatedIdafsaGrid(const IdafsaGridWorld& shipped,
+                                                             const std::vector<FishConfig>& configs,
+                                                             const ExperimentOptions& options,
+                                                             int worlds, int runs, int generations);
+
+// The report's section: per grid size a per-world table, a pooled table (length over each
+// world's optimum) and the signed-rank test of the per-world medians, each configuration against
+// configs[reference]. `summary` receives the conclusions the tests support, for the discussion.
+std::string ReplicatedIdafsaSection(const std::vector<ReplicatedIdafsaGrid>& grids,
+                                    const std::vector<FishConfig>& configs, size_t reference,
+                                    int runs, std::string* summary);
+
+}  // namespace swarmplan::bench
