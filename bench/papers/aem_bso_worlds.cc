@@ -634,7 +634,7 @@ absl::StatusOr<std::string> RunAemBsoWorlds(const ExperimentOptions& options) {
   }
   Replication replication;
   replication.runs = options.quick ? kQuickRuns : kReplicatedRuns;
-  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : aem_bso::kReplicatedWorlds;
+  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : kReplicatedWorlds;
   for (const AemBsoWorldSpec& spec : AemBsoWorldSpecs()) {
     absl::StatusOr<aem_bso::ReplicatedEnvironment> environment = aem_bso::RunReplicatedEnvironment(
         spec, Planners(), options, replicated_worlds, replication.runs, iterations);

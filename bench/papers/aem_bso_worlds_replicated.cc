@@ -76,7 +76,7 @@ std::string WorldsTable(const std::vector<ReplicatedEnvironment>& environments,
 
 AemBsoWorldSpec ReplicatedSpec(const AemBsoWorldSpec& spec, int index) {
   AemBsoWorldSpec out = spec;
-  out.seed = spec.seed + static_cast<uint64_t>(index) * kWorldSeedStride;
+  out.seed = ReplicatedWorldSeed(spec.seed, index);
   if (index > 0) out.file.clear();
   return out;
 }

@@ -12,15 +12,12 @@
 #include "bench/papers/aem_bso_worlds_generate.h"
 #include "bench/papers/aem_bso_worlds_runs.h"
 #include "bench/papers/experiment.h"
+#include "bench/papers/world_replication.h"
 
 namespace swarmplan::bench::aem_bso {
 
-inline constexpr int kReplicatedWorlds = 10;
-// World r of an environment draws from seed spec.seed + r * kWorldSeedStride on: far enough
-// apart that no two worlds share a draw.
-inline constexpr uint64_t kWorldSeedStride = 1000;
-
-// World `index` of the environment `spec`; index 0 is the shipped world.
+// World `index` of the environment `spec` (its first seed ReplicatedWorldSeed(spec.seed, index));
+// index 0 is the shipped world.
 AemBsoWorldSpec ReplicatedSpec(const AemBsoWorldSpec& spec, int index);
 
 struct ReplicatedWorld {

@@ -521,7 +521,7 @@ absl::StatusOr<std::string> RunIdafsaGrids(const ExperimentOptions& options) {
   }
   const double bound = 1.0 / DefaultBezierOptions(*results.front().map, 0.0).min_turning_radius;
 
-  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : kIdafsaReplicatedWorlds;
+  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : kReplicatedWorlds;
   const int replicated_runs = options.quick ? kQuickRuns : kReplicatedRuns;
   std::vector<FishConfig> configs;
   for (const TableRow& row : rows) configs.push_back(row.config);

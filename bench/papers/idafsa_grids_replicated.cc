@@ -216,7 +216,7 @@ std::string GridSummary(const ReplicatedIdafsaGrid& grid, const std::vector<Fish
 
 IdafsaGridWorld ReplicatedIdafsaWorld(const IdafsaGridWorld& shipped, int index) {
   IdafsaGridWorld world = shipped;
-  world.seed = shipped.seed + static_cast<uint64_t>(index) * kIdafsaWorldSeedStride;
+  world.seed = ReplicatedWorldSeed(shipped.seed, index);
   if (index > 0) {
     world.file =
         absl::StrFormat("%dx%d world %d (drawn in memory)", shipped.size, shipped.size, index);
@@ -283,8 +283,8 @@ std::string ReplicatedIdafsaSection(const std::vector<ReplicatedIdafsaGrid>& gri
       "table asks whether a difference holds across worlds: the signed-rank test on the "
       "per-world medians (over the worlds where both succeeded) and on the per-world success "
       "rates, and how many single worlds show a significant difference on their own.\n\n",
-      grids.empty() ? 0 : static_cast<int>(grids.front().worlds.size()), kIdafsaWorldSeedStride,
-      runs, configs[reference].label);
+      grids.empty() ? 0 : static_cast<int>(grids.front().worlds.size()), kWorldSeedStride, runs,
+      configs[reference].label);
   for (const ReplicatedIdafsaGrid& grid : grids) {
     const ComparedRuns pooled_ref = PooledRuns(configs[reference].label, grid, reference);
     std::vector<ComparedRuns> pooled_others;

@@ -12,13 +12,9 @@
 #include "bench/papers/experiment.h"
 #include "bench/papers/idafsa_grids_runs.h"
 #include "bench/papers/idafsa_grids_worlds.h"
+#include "bench/papers/world_replication.h"
 
 namespace swarmplan::bench {
-
-inline constexpr int kIdafsaReplicatedWorlds = 10;
-// World r of a grid size draws from seed world.seed + r * kIdafsaWorldSeedStride on: far enough
-// apart (GenerateIdafsaGrid tries at most 1000 seeds) that no two worlds share a draw.
-inline constexpr uint64_t kIdafsaWorldSeedStride = 1000;
 
 // World `index` of the grid size of `shipped`; index 0 is the shipped world's spec.
 IdafsaGridWorld ReplicatedIdafsaWorld(const IdafsaGridWorld& shipped, int index);

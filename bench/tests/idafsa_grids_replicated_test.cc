@@ -44,9 +44,9 @@ TEST(IdafsaGridsReplicatedTest, WorldZeroIsTheShippedWorld) {
 TEST(IdafsaGridsReplicatedTest, WorldsAreDeterministicDistinctAndConnected) {
   for (const IdafsaGridWorld& shipped : IdafsaGridWorlds()) {
     std::set<std::string> layouts;
-    for (int r = 0; r < kIdafsaReplicatedWorlds; ++r) {
+    for (int r = 0; r < kReplicatedWorlds; ++r) {
       const IdafsaGridWorld world = ReplicatedIdafsaWorld(shipped, r);
-      EXPECT_EQ(world.seed, shipped.seed + r * kIdafsaWorldSeedStride);
+      EXPECT_EQ(world.seed, shipped.seed + r * kWorldSeedStride);
       absl::StatusOr<DrawnIdafsaGrid> a = DrawIdafsaGrid(world);
       absl::StatusOr<DrawnIdafsaGrid> b = DrawIdafsaGrid(world);
       ASSERT_TRUE(a.ok()) << a.status();
@@ -54,14 +54,14 @@ TEST(IdafsaGridsReplicatedTest, WorldsAreDeterministicDistinctAndConnected) {
       EXPECT_EQ(FormatAsciiMap(a->grid), FormatAsciiMap(b->grid)) << world.file;
       EXPECT_EQ(a->seed, b->seed);
       EXPECT_GE(a->seed, world.seed);
-      EXPECT_LT(a->seed, world.seed + kIdafsaWorldSeedStride);
+      EXPECT_LT(a->seed, world.seed + kWorldSeedStride);
       EXPECT_EQ(a->grid.width(), shipped.size);
       EXPECT_EQ(a->grid.BlockedCount(),
                 std::llround(shipped.obstacle_ratio * shipped.size * shipped.size));
       EXPECT_TRUE(FourConnected(a->grid, IdafsaStart(world), IdafsaGoal(world))) << world.file;
       layouts.insert(FormatAsciiMap(a->grid));
     }
-    EXPECT_EQ(layouts.size(), static_cast<size_t>(kIdafsaReplicatedWorlds)) << shipped.file;
+    EXPECT_EQ(layouts.size(), static_cast<size_t>(kReplicatedWorlds)) << shipped.file;
   }
 }
 
