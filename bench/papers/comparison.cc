@@ -41,15 +41,23 @@ std::optional<double> SuccessP(const SuccessCount& a, const SuccessCount& b) {
 
 std::string PValueCell(std::optional<double> p) { return p.has_value() ? FormatPValue(*p) : "–"; }
 
-namespace {
+RankComparison CompareRanks(const std::vector<double>& reference,
+                            const std::vector<double>& other) {
+  RankComparison out;
+  const std::optional<RankSumTest> test = MannWhitneyU(other, reference);
+  if (!test.has_value()) return out;
+  out.p = test->p_value;
+  out.other_higher = test->u > 0.5 * static_cast<double>(other.size() * reference.size());
+  return out;
+}
+
 bool Significant(std::optional<double> p) { return p.has_value() && *p < kSignificanceLevel; }
-}  // namespace
 
 std::string ValueDifference(const std::string& other, const std::string& what,
                             const std::vector<double>& reference, const std::vector<double>& theirs,
                             std::optional<double> p) {
   if (!Significant(p)) return "";
-  const bool higher = Median(theirs).value_or(0.0) > Median(reference).value_or(0.0);
+  const bool higher = CompareRanks(reference, theirs).other_higher;
   return absl::StrCat(other, "'s ", what, higher ? " higher" : " lower", " (",
                       FormatPValue(*p, /*mark_significant=*/false), ")");
 }

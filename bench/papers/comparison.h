@@ -23,6 +23,18 @@ std::string MedianWithInterval(const std::vector<double>& values, int significan
 // The two-sided Mann-Whitney p-value of `a` against `b`; nullopt when a sample is empty.
 std::optional<double> RankSumP(const std::vector<double>& a, const std::vector<double>& b);
 
+// A rank-sum test of `other` against `reference`, with the direction of the difference: by U,
+// whether values of `other` tend to be the larger ones (medians tie when most runs reach the
+// same value, ranks do not).
+struct RankComparison {
+  std::optional<double> p;
+  bool other_higher = false;
+};
+RankComparison CompareRanks(const std::vector<double>& reference, const std::vector<double>& other);
+
+// p < kSignificanceLevel.
+bool Significant(std::optional<double> p);
+
 // The two-sided Wilcoxon signed-rank p-value of the pairs (a[i], b[i]); nullopt when the sizes
 // differ or a sample is empty.
 std::optional<double> SignedRankP(const std::vector<double>& a, const std::vector<double>& b);
@@ -37,7 +49,7 @@ std::optional<double> SuccessP(const SuccessCount& a, const SuccessCount& b);
 std::string PValueCell(std::optional<double> p);
 
 // One difference of `other` from the reference that a test supports, for a discussion:
-// "pso's length higher (p = 0.003)" (by the medians of the values) or "ba found fewer
+// "pso's length higher (p = 0.003)" (by the ranks of the values) or "ba found fewer
 // (p = 2e-05)"; empty when p is absent or not below kSignificanceLevel.
 std::string ValueDifference(const std::string& other, const std::string& what,
                             const std::vector<double>& reference, const std::vector<double>& theirs,
