@@ -15,8 +15,12 @@
 #include "absl/strings/str_format.h"
 #include "absl/strings/str_join.h"
 #include "absl/time/time.h"
-#include "bench/papers/as_bfo_islands_check.h"
+#include "bench/papers/as_bfo_islands_discussion.h"
+#include "bench/papers/as_bfo_islands_replicated.h"
 #include "bench/papers/as_bfo_islands_report.h"
+#include "bench/papers/as_bfo_islands_runs.h"
+#include "bench/papers/as_bfo_islands_significance.h"
+#include "bench/papers/as_bfo_islands_sweep_tests.h"
 #include "bench/papers/as_bfo_islands_world.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
@@ -78,14 +82,17 @@ namespace {
 constexpr int kTableRuns = 20;  // the paper's
 constexpr int kSweepRuns = 20;
 constexpr int kSweepSize = 20;  // the paper sweeps on S3
+constexpr int kReplicatedRuns = 10;
+// The drawn worlds run at the size the paper tunes on (S3) and at the largest, where it finds
+// AS-BFO's advantage greatest (S5).
+const std::vector<int>& ReplicatedSizes() {
+  static const std::vector<int>* const sizes = new std::vector<int>{20, 30};
+  return *sizes;
+}
+constexpr int kQuickReplicatedWorlds = 2;
 
 void Log(const ExperimentOptions& options, const std::string& line) {
   if (options.log != nullptr) *options.log << line << "\n";
-}
-
-Point3 CellPoint(const OccupancyGrid& grid, Cell c) {
-  const Point2 p = grid.CellCenter(c);
-  return Point3(p.x(), p.y(), 0.0);
 }
 
 absl::StatusOr<World> LoadWorld(const std::string& worlds_dir, const std::string& environment,
@@ -94,58 +101,15 @@ absl::StatusOr<World> LoadWorld(const std::string& worlds_dir, const std::string
       absl::StrCat(worlds_dir, "/", kName, "/", IslandWorldFile(environment, n));
   absl::StatusOr<Map> map = LoadMapFile(path, "ascii");
   if (!map.ok()) return map.status();
-  World world;
-  world.environment = environment;
-  world.n = n;
-  world.map = std::make_shared<const Map>(*std::move(map));
-  const OccupancyGrid* grid = world.map->grid();
+  const OccupancyGrid* grid = map->grid();
   if (grid == nullptr || grid->width() != n || grid->height() != n) {
     return absl::FailedPreconditionError(absl::StrCat(path, ": not a ", n, " x ", n, " grid"));
   }
-  world.start = IslandStart(n);
-  world.goal = IslandGoal(n);
-  world.blocked = grid->BlockedCount();
-  world.islands = CountIslands(*grid);
-  absl::StatusOr<PlanResult> exact =
-      PlanOnce(PlanSpec{"astar", {}}, world.map, CellPoint(*grid, world.start),
-               CellPoint(*grid, world.goal), seed);
-  if (!exact.ok()) return exact.status();
-  if (!exact->found) {
-    return absl::FailedPreconditionError(absl::StrCat(path, ": A* finds no path"));
-  }
-  world.optimum = exact->raw_metrics.length;
-  if (absl::Status s = CheckGridPath(*grid, exact->raw_path, exact->raw_metrics, world.start,
-                                     world.goal, world.optimum);
-      !s.ok()) {
-    return absl::InternalError(absl::StrCat(path, ": astar: ", s.message()));
+  absl::StatusOr<World> world = MakeWorld(environment, *grid, seed);
+  if (!world.ok()) {
+    return absl::Status(world.status().code(), absl::StrCat(path, ": ", world.status().message()));
   }
   return world;
-}
-
-absl::StatusOr<Outcome> RunConfig(const PlanSpec& spec, const World& world, int runs,
-                                  uint64_t seed) {
-  const OccupancyGrid& grid = *world.map->grid();
-  Outcome outcome;
-  for (int i = 0; i < runs; ++i) {
-    const uint64_t run_seed = seed + static_cast<uint64_t>(i);
-    absl::StatusOr<PlanResult> result = PlanOnce(spec, world.map, CellPoint(grid, world.start),
-                                                 CellPoint(grid, world.goal), run_seed);
-    const std::string where = absl::StrCat(spec.algorithm, " on ", world.environment, " ", world.n,
-                                           "x", world.n, ", seed ", run_seed, ": ");
-    if (!result.ok()) return absl::InternalError(where + std::string(result.status().message()));
-    ++outcome.runs;
-    outcome.millis.push_back(absl::ToDoubleMilliseconds(result->wall_time));
-    outcome.evaluations.push_back(static_cast<double>(result->evaluations));
-    if (!result->found) continue;
-    if (absl::Status s = CheckGridPath(grid, result->raw_path, result->raw_metrics, world.start,
-                                       world.goal, world.optimum);
-        !s.ok()) {
-      return absl::InternalError(where + std::string(s.message()));
-    }
-    outcome.lengths.push_back(result->raw_metrics.length);
-    outcome.ains.push_back(result->best_iteration + 1.0);
-  }
-  return outcome;
 }
 
 }  // namespace
@@ -211,6 +175,20 @@ absl::StatusOr<std::string> Run(const ExperimentOptions& options) {
     }
   }
 
+  // Table 4's methods of the paper on drawn worlds, AS-BFO first.
+  const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : kReplicatedWorlds;
+  const int replicated_runs = options.quick      ? kQuickRuns
+                              : options.runs > 0 ? options.runs
+                                                 : kReplicatedRuns;
+  std::vector<size_t> replicated_methods{kReferenceMethod};
+  for (size_t m : TestedMethods()) replicated_methods.push_back(m);
+  absl::StatusOr<std::vector<ReplicatedIslandCell>> replicated_runs_or =
+      RunReplicatedIslands(replicated_methods, options.quick ? sizes : ReplicatedSizes(), options,
+                           replicated_worlds, replicated_runs, max_iterations);
+  if (!replicated_runs_or.ok()) return replicated_runs_or.status();
+  const std::vector<ReplicatedIslandCell> replicated = *std::move(replicated_runs_or);
+  std::string replicated_differences;
+
   std::string report = "# AS-BFO: Table 4 and the parameter sweeps of section 4.1\n\n";
   absl::StrAppend(&report,
                   "Reproduces Long et al., *A*-based bacterial foraging optimisation for global "
@@ -224,8 +202,15 @@ absl::StatusOr<std::string> Run(const ExperimentOptions& options) {
   absl::StrAppend(&report, WorldsSection(worlds));
   absl::StrAppend(&report, Table4Section(worlds, outcomes));
   absl::StrAppend(&report, Table4Summary(worlds, outcomes));
+  absl::StrAppend(&report, Table4TestsSection(worlds, outcomes));
+  absl::StrAppend(&report, ReplicatedIslandsSection(replicated, replicated_methods, replicated_runs,
+                                                    options.seed, &replicated_differences));
   absl::StrAppend(&report, SweepSection(*sweep_world, sweep_rows, sweep_runs));
-  absl::StrAppend(&report, Discussion(options.quick));
+  const std::vector<SweepEnds> sweep_ends = SweepEndsOf(sweep_rows, sweep_world->optimum);
+  absl::StrAppend(&report, SweepTestsSection(sweep_ends, sweep_world->optimum));
+  absl::StrAppend(&report, Discussion({worlds, outcomes, *sweep_world, sweep_rows, sweep_ends,
+                                       replicated_worlds, replicated_runs, replicated_differences,
+                                       options.quick}));
   absl::StrAppend(&report,
                   "Times are wall-clock times from a shared, loaded 2-core machine: compare "
                   "ratios between planners, not absolute values.\n");

@@ -53,11 +53,12 @@ std::string SettingsSection(const ExperimentOptions& options, int table_runs, in
                 "`aco-grid` defaults: 50 ants, α = 1, β = 7, ρ = 0.3, Q = 1, 100 iterations"});
   table.AddRow({"GA", "tuned on S3, values not published",
                 "`ga` defaults: 50 individuals, 100 generations, crossover 0.8, mutation 0.2"});
-  table.AddRow({"extra rows", "–",
-                absl::StrCat("AS-BFO and GA ≤", kWanderingVia, " via: initial paths through up to ",
-                             kWanderingVia,
-                             " random cells (`max_waypoints`) instead of 3, nearer the paper's "
-                             "random initial paths")});
+  table.AddRow(
+      {"extra rows", "–",
+       absl::StrCat("AS-BFO and GA ≤", kWanderingVia, " via: initial paths through up to ",
+                    kWanderingVia, " random cells (`max_waypoints`) instead of ", kDefaultVia,
+                    ", nearer the paper's "
+                    "random initial paths")});
   table.AddRow(
       {"runs", "20 per cell",
        absl::StrCat(table_runs, " per cell (Table 4), ", sweep_runs, " per value (sweeps)")});
@@ -240,7 +241,9 @@ std::string SweepSection(const World& world, const std::vector<SweepRow>& rows, 
                   " runs per value. As in the paper, the other three parameters stay at P = 50, "
                   "Nc = 5, Nre = 2, Ned = 2. Iterations = Nc·Nre·Ned, so the Nc, Nre and Ned "
                   "sweeps also change the budget. Each value runs twice: with our default initial "
-                  "paths (through 1–3 random cells joined by A*) and with wandering ones (through "
+                  "paths (through 1–",
+                  kDefaultVia,
+                  " random cells joined by A*) and with wandering ones (through "
                   "up to ",
                   kWanderingVia,
                   " random cells, `max_waypoints`), which leave the operators more to do. Success "
@@ -283,54 +286,6 @@ std::string SweepSection(const World& world, const std::vector<SweepRow>& rows, 
                   "The paper gives its sweeps only as plots (Figs. 6–9, path length and "
                   "iteration number per value); what its text says of them:\n\n",
                   paper.ToString(), "\n");
-  return text;
-}
-
-// Written for the numbers of the full run (seed 1); the runs are seeded, so they reproduce.
-std::string Discussion(bool quick) {
-  std::string text = "## Discussion\n\n";
-  if (quick) absl::StrAppend(&text, "*This discussion refers to the full run.*\n\n");
-  absl::StrAppend(
-      &text,
-      "**Where we agree.** AS-BFO finds its final path almost at once: our AIN is 1.0 with the "
-      "default initial paths and at most 2.5 with wandering ones, the paper's 1.0–4.6. AS-BFO is "
-      "never worse than ACO, and ACO is the weakest method: of the paper's three it is the only "
-      "one that misses the optimum on average (environment 2, S2–S5: APL up to 3.7% above A*), and "
-      "its AIN grows "
-      "with the map (ours 1.4 → 35, the paper's 3.8 → 26). ACO is also by far the slowest "
-      "(20–50× AS-BFO here), since every ant walks cell by cell.\n\n",
-      "**Where we do not.** (1) The paper's GA is clearly worse than AS-BFO (APL up to 52% above "
-      "the best, AIN 13–91); ours reaches A*'s optimum in every run, already in the initial "
-      "population (\"final best in iteration 1\": 20/20). The reason is the initialisation we "
-      "share between `as-bfo` and `ga` (ALGORITHMS.md): each initial path runs through 1–3 "
-      "random cells joined by A*, so every leg is already optimal, and on grids of at most "
-      "30×30 one of 50 such paths is the optimum. The paper only says its initial paths are "
-      "\"randomly generated without infeasible paths\"; if they were random walks, its "
-      "operators had far more to repair, which is where its differences come from. Even with "
-      "up to 100 random cells per initial path (the ≤100 via rows), A*-joined legs plus loop "
-      "removal stay within 0.1% of the optimum, and the final best is still found in the first "
-      "iteration in 17–20 of 20 runs. (2) The paper's ACO degrades badly at S4–S5 (APL 1.6–2.3× "
-      "the best); ours stays within 4%. Its ACO parameters are not published, and its AIN of "
-      "8–9 there suggests early stagnation; ours uses α = 1, β = 7 (a strong pull to the goal) "
-      "and 100 iterations. (3) Lengths are not comparable number for number: the paper's maps "
-      "are not published (its shortest S1 paths are 13.31 and 14.49 long, our S1 optima 15.07), so "
-      "only the "
-      "distance to A* and the ranking carry over.\n\n",
-      "**The paper's table itself** has two impossible cells: ACO in environment 2, S5 has "
-      "MinPL = MaxPL = 101.88 but APL = 89.43, below its minimum; GA in environment 1, S5 has "
-      "MaxPL = APL = 68.53, which would need all 20 runs at the maximum while MinPL is 48.87. "
-      "We copied the numbers as printed.\n\n",
-      "**Sweeps.** With our default initial paths every value reaches the optimum in (almost) "
-      "every run, with AIN 1: on this map the sweeps cannot tell the values apart, so we also "
-      "ran them with wandering initial paths. Then the population matters as the paper says "
-      "(\"bacteria number is inversely proportional to the path length\", \"the greater the "
-      "number of bacteria, the faster the convergence\"): P = 10 reaches the optimum in 11 of "
-      "20 runs with AIN 8.5, P ≥ 60 in all 20 with AIN 1. Nc, Nre and Ned act mostly through "
-      "the iteration budget Nc·Nre·Ned: the runs that miss the optimum are one run in 20 "
-      "(30.97 instead of 30.38) at budgets of 20 iterations or less and at Nre = 4. A "
-      "difference of one run in 20 cannot support the paper's findings of a best Nc, Nre or "
-      "Ned (which, besides, differ between its two environments: e.g. Nre = 5 vs Nre = 2); "
-      "its overall trend, longer runs give shorter paths, does hold.\n\n");
   return text;
 }
 

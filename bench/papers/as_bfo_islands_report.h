@@ -43,6 +43,8 @@ struct Outcome {
 // Initial paths through up to this many random cells (the planners' max_waypoints): closer to
 // the paper's random initial paths than our default of 3.
 inline constexpr int kWanderingVia = 100;
+// The planners' default: initial paths through 1 to this many random cells.
+inline constexpr int kDefaultVia = 3;
 
 struct Method {
   std::string label;
@@ -82,7 +84,5 @@ std::string Table4Section(const std::vector<std::vector<World>>& worlds, const T
 // How many worlds each method has the lowest APL (ties count for all) and reaches the optimum.
 std::string Table4Summary(const std::vector<std::vector<World>>& worlds, const Table4& outcomes);
 std::string SweepSection(const World& world, const std::vector<SweepRow>& rows, int runs);
-// The discussion of the full run's numbers (a note says so in quick mode).
-std::string Discussion(bool quick);
 
 }  // namespace swarmplan::bench::as_bfo_islands
