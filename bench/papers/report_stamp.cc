@@ -37,7 +37,8 @@ std::string ReportStamp(const std::string& command, const std::string& source_di
     tree = "an unknown commit (no git checkout)";
   } else {
     const std::string changes =
-        CommandOutput(git + " status --porcelain --untracked-files=no 2>/dev/null");
+        CommandOutput(absl::StrCat(git, " status --porcelain --untracked-files=no -- ':(top)' ",
+                                   "':(top,exclude)", kReportsDir, "' 2>/dev/null"));
     tree =
         absl::StrCat("commit `", commit, "`", changes.empty() ? "" : " with uncommitted changes");
   }
