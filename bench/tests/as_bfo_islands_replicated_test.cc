@@ -13,19 +13,13 @@
 #include "absl/strings/strip.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
+#include "bench/tests/read_file.h"
 #include "core/graph/grid_search.h"
 #include "core/map/io/map_writers.h"
 #include "gtest/gtest.h"
 
 namespace swarmplan::bench::as_bfo_islands {
 namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(AsBfoReplicatedWorldsTest, WorldZeroIsTheShippedWorld) {
   for (const IslandEnvironmentSpec& spec : AsBfoEnvironments()) {

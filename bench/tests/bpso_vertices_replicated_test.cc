@@ -16,6 +16,7 @@
 #include "bench/papers/bpso_vertices_worlds.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
+#include "bench/tests/read_file.h"
 #include "core/geometry/obstacle_vertices.h"
 #include "core/graph/visibility_graph.h"
 #include "core/map/io/map_writers.h"
@@ -24,13 +25,6 @@
 
 namespace swarmplan::bench::bpso {
 namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string WorldName(int vertices) { return absl::StrCat("bpso-vertices-", vertices); }
 

@@ -8,19 +8,13 @@
 #include "bench/papers/experiment.h"
 #include "bench/papers/markdown_table.h"
 #include "bench/papers/plan_once.h"
+#include "bench/tests/read_file.h"
 #include "gtest/gtest.h"
 
 namespace swarmplan::bench {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(MarkdownTableTest, AlignsNumberColumnsRightAndPadsShortRows) {
   MarkdownTable table({"planner", "best", "mean"});
