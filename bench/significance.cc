@@ -46,6 +46,16 @@ std::vector<double> SignedRankCounts(int n) {
   return counts;
 }
 
+// The two-sided exact p-value of an observed statistic from the number of arrangements giving
+// each value of it (counts[k]: value k), out of `all`.
+double TwoSidedExactP(const std::vector<double>& counts, double statistic, double all) {
+  const size_t observed = static_cast<size_t>(std::lround(statistic));
+  double at_most = 0.0, at_least = 0.0;
+  for (size_t k = 0; k <= observed; ++k) at_most += counts[k];
+  for (size_t k = observed; k < counts.size(); ++k) at_least += counts[k];
+  return std::min(1.0, 2.0 * std::min(at_most, at_least) / all);
+}
+
 bool AllFinite(const std::vector<double>& values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
@@ -94,12 +104,8 @@ std::optional<RankSumTest> MannWhitneyU(const std::vector<double>& a,
   const double mn = static_cast<double>(m) * n;
   if (!ties && total <= kExactRankSumValues) {
     const std::vector<double> counts = RankSumCounts(m, n);
-    const double all = std::accumulate(counts.begin(), counts.end(), 0.0);
-    const int u = static_cast<int>(std::lround(result.u));
-    double at_most = 0.0, at_least = 0.0;
-    for (int k = 0; k <= u; ++k) at_most += counts[k];
-    for (size_t k = u; k < counts.size(); ++k) at_least += counts[k];
-    result.p_value = std::min(1.0, 2.0 * std::min(at_most, at_least) / all);
+    result.p_value =
+        TwoSidedExactP(counts, result.u, std::accumulate(counts.begin(), counts.end(), 0.0));
     result.exact = true;
     return result;
   }
@@ -140,12 +146,7 @@ std::optional<SignedRankTest> WilcoxonSignedRank(const std::vector<double>& a,
   }
   if (!ties && n <= kExactSignedRankPairs) {
     const std::vector<double> counts = SignedRankCounts(n);
-    const double all = std::ldexp(1.0, n);
-    const int v = static_cast<int>(std::lround(result.v));
-    double at_most = 0.0, at_least = 0.0;
-    for (int k = 0; k <= v; ++k) at_most += counts[k];
-    for (size_t k = v; k < counts.size(); ++k) at_least += counts[k];
-    result.p_value = std::min(1.0, 2.0 * std::min(at_most, at_least) / all);
+    result.p_value = TwoSidedExactP(counts, result.v, std::ldexp(1.0, n));
     result.exact = true;
     return result;
   }

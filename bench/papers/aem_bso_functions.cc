@@ -436,9 +436,7 @@ absl::StatusOr<std::string> RunAemBsoFunctions(const ExperimentOptions& options)
   std::vector<std::string> equal_lower;
   for (size_t f = 0; f < equal.size(); ++f) {
     if (std::all_of(equal[f].begin() + 1, equal[f].end(), [&](const FunctionCell& other) {
-          const std::optional<double> p = RankSumP(equal[f][0].best_values, other.best_values);
-          return p.has_value() && *p < kSignificanceLevel &&
-                 Median(equal[f][0].best_values) < Median(other.best_values);
+          return aem_bso::SignificantlyLower(equal[f][0].best_values, other.best_values);
         })) {
       equal_lower.push_back(AemBsoTestFunctions()[f].id);
     }

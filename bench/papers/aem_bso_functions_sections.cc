@@ -27,13 +27,13 @@ std::string VersusCell(const std::vector<double>& a, const std::vector<double>& 
   return absl::StrCat(direction, ", ", PValueCell(p));
 }
 
+}  // namespace
+
 bool SignificantlyLower(const std::vector<double>& a, const std::vector<double>& b) {
   const std::optional<double> p = RankSumP(a, b);
   return p.has_value() && *p < kSignificanceLevel &&
          Median(a).value_or(0.0) < Median(b).value_or(0.0);
 }
-
-}  // namespace
 
 std::string Sci(std::optional<double> value) {
   if (!value) return "–";

@@ -23,6 +23,10 @@ std::string ResultsTable(const std::vector<const TestFunction*>& functions,
                          const std::vector<std::string>& labels, const CellGrid& cells,
                          const std::array<PaperRow, 10>* paper);
 
+// Whether `a`'s values are significantly below `b`'s: rank-sum p < kSignificanceLevel and a
+// lower median.
+bool SignificantlyLower(const std::vector<double>& a, const std::vector<double>& b);
+
 // Column 0 against every other column, per function: the rank-sum test on the final values.
 // `lower_than_all` receives the functions where column 0 is significantly lower than every
 // other column; `lower_than_baselines` those where it is lower than columns 2.. (BSO, PSO, BA:
