@@ -1,10 +1,21 @@
 #include "core/algorithms/baselines/ba.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "absl/status/status.h"
+#include "absl/strings/str_cat.h"
+
 namespace swarmplan {
+
+absl::StatusOr<PulseSchedule> ParsePulseSchedule(const std::string& name) {
+  if (name == "on-accept") return PulseSchedule::kOnAccept;
+  if (name == "per-iteration") return PulseSchedule::kPerIteration;
+  return absl::InvalidArgumentError(
+      absl::StrCat("pulse_schedule: unknown '", name, "' (on-accept or per-iteration)"));
+}
 
 SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, int t_max, Rng& rng,
                               const StopToken& stop, Observer& observer) {
@@ -13,7 +24,11 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
   const Eigen::VectorXd span = objective.upper() - objective.lower();
   std::vector<Eigen::VectorXd> x(n, Eigen::VectorXd(dim));
   std::vector<Eigen::VectorXd> v(n, Eigen::VectorXd::Zero(dim));
-  std::vector<double> f(n), loudness(n, options.loudness0), pulse_rate(n, options.pulse_rate0);
+  const bool per_iteration = options.pulse_schedule == PulseSchedule::kPerIteration;
+  const double scheduled_pulse0 = per_iteration ? 0.0 : options.pulse_rate0;
+  std::vector<double> f(n), loudness(n, options.loudness0), pulse_rate(n, scheduled_pulse0);
+  const bool bounded = options.velocity_fraction > 0.0;
+  const Eigen::VectorXd v_max = options.velocity_fraction * span;
 
   SearchOutcome out;
   out.best_fitness = std::numeric_limits<double>::infinity();
@@ -34,6 +49,9 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
 
   Eigen::VectorXd candidate(dim);
   RunIterations(t_max, stop, observer, out, [&](const Iteration& iteration) {
+    const double scheduled_pulse =
+        options.pulse_rate0 * (1.0 - std::exp(-options.gamma * iteration.t));
+    if (per_iteration) std::fill(pulse_rate.begin(), pulse_rate.end(), scheduled_pulse);
     double mean_loudness = 0.0;
     for (double a : loudness) mean_loudness += a;
     mean_loudness /= std::max(n, 1);
@@ -41,6 +59,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
     for (int i = 0; i < n; ++i) {
       const double freq = options.f_min + (options.f_max - options.f_min) * rng.Uniform();
       v[i] += (x[i] - out.best_x) * freq;
+      if (bounded) v[i] = v[i].cwiseMax(-v_max).cwiseMin(v_max);
       candidate = x[i] + v[i];
       if (rng.Uniform() > pulse_rate[i]) {
         for (int j = 0; j < dim; ++j) {
@@ -55,7 +74,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
         x[i] = candidate;
         f[i] = e.fitness;
         loudness[i] *= options.alpha;
-        pulse_rate[i] = options.pulse_rate0 * (1.0 - std::exp(-options.gamma * iteration.t));
+        if (!per_iteration) pulse_rate[i] = scheduled_pulse;
       }
       if (e.fitness <= out.best_fitness) {
         out.best_fitness = e.fitness;

@@ -32,6 +32,16 @@ PlannerInfo BatInfo() {
       ParamSpec::Double("pulse_rate0", 0.5, 0.0, 1.0, "", "final pulse rate r0").Ours());
   info.params.push_back(ParamSpec::Double("alpha", 0.9, 0.0, 1.0, "", "loudness decay"));
   info.params.push_back(ParamSpec::Double("gamma", 0.9, 0.0, 100.0, "", "pulse rate growth"));
+  info.params.push_back(
+      ParamSpec::Enum("pulse_schedule", "on-accept", {"on-accept", "per-iteration"},
+                      "when r_i = r0 (1 - exp(-gamma t)): on-accept, when bat i accepts a "
+                      "candidate (from r_i = r0); per-iteration, for every bat at every "
+                      "iteration (from r_i = 0)")
+          .Ours());
+  info.params.push_back(ParamSpec::Double("velocity_fraction", 0.0, 0.0, 10.0, "",
+                                          "velocity bound as a fraction of each coordinate's "
+                                          "span; 0: no bound (Yang's BA)")
+                            .Ours());
   info.params.push_back(ParamSpec::Double("walk_fraction", 0.01, 0.0, 1.0, "",
                                           "local walk scale as a fraction of the span")
                             .Ours());

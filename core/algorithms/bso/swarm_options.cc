@@ -45,6 +45,8 @@ BatOptions BatOptionsFromParams(const ParamSet& params) {
   options.alpha = params.Double("alpha");
   options.gamma = params.Double("gamma");
   options.walk_fraction = params.Double("walk_fraction");
+  options.velocity_fraction = params.Double("velocity_fraction");
+  options.pulse_schedule = *ParsePulseSchedule(params.Enum("pulse_schedule"));
   return options;
 }
 
