@@ -175,8 +175,9 @@ class BinaryPsoSearch {
   // `vertices` in visiting order; `patterns` (init=seeded) the seeds' bit patterns, best first.
   BinaryPsoSearch(const BinaryPsoParams& p, const Problem& problem, std::vector<Point2> vertices,
                   std::vector<std::vector<uint8_t>> patterns, SegmentBlocked blocked,
-                  double penalty)
+                  double penalty, AssistantTrace* trace)
       : p_(p),
+        trace_(trace),
         problem_(problem),
         blocked_(std::move(blocked)),
         penalty_(penalty),
@@ -223,6 +224,7 @@ class BinaryPsoSearch {
     std::vector<double> gbest_aux = aux[g];
     double gbest_fit = fit[g];
 
+    if (trace_ != nullptr) *trace_ = AssistantTrace{};
     ConvergenceLog log(observer);
     int iteration = 0;
     for (; iteration < p_.iterations; ++iteration) {
@@ -245,6 +247,9 @@ class BinaryPsoSearch {
           double s;
           if (p_.double_structure) {
             aux[i][k] += v;
+            if (p_.assistant_bound > 0) {
+              aux[i][k] = std::clamp(aux[i][k], -p_.assistant_bound, p_.assistant_bound);
+            }
             s = Sigmoid(aux[i][k]);
           } else {
             s = Sigmoid(v);
@@ -270,6 +275,7 @@ class BinaryPsoSearch {
         }
       }
       log.Record(iteration, gbest_fit, sum / n, evaluations_, gbest_fit < penalty_);
+      if (trace_ != nullptr) Trace(aux);
     }
     result.iterations = iteration;
     result.evaluations = evaluations_;
@@ -291,6 +297,21 @@ class BinaryPsoSearch {
     return path;
   }
 
+  void Trace(const std::vector<std::vector<double>>& aux) const {
+    int64_t count = 0, saturated = 0;
+    double magnitude = 0.0;
+    for (const std::vector<double>& particle : aux) {
+      for (double x : particle) {
+        ++count;
+        magnitude += std::abs(x);
+        if (std::abs(x) >= kSaturatedAssistant) ++saturated;
+      }
+    }
+    const double per = count > 0 ? 1.0 / static_cast<double>(count) : 0.0;
+    trace_->saturated_fraction.push_back(static_cast<double>(saturated) * per);
+    trace_->mean_magnitude.push_back(magnitude * per);
+  }
+
   double Fitness(const std::vector<uint8_t>& bits) {
     ++evaluations_;
     const std::vector<Point2> path = PathOf(bits);
@@ -304,6 +325,7 @@ class BinaryPsoSearch {
   }
 
   const BinaryPsoParams& p_;
+  AssistantTrace* trace_;
   const Problem& problem_;
   SegmentBlocked blocked_;
   double penalty_;
@@ -332,6 +354,10 @@ std::vector<ParamSpec> BinaryPsoParams::Specs() {
       ParamSpec::Double("w_max", d.w_max, 0.0, 2.0, "", "inertia at the first iteration"),
       ParamSpec::Double("w_min", d.w_min, 0.0, 2.0, "", "inertia at the last iteration"),
       ParamSpec::Double("v_max", d.v_max, 0.01, 100.0, "", "velocity clamp").Ours(),
+      ParamSpec::Double("assistant_bound", d.assistant_bound, 0.0, 1000.0, "",
+                        "double structure: each assistant position is kept within "
+                        "[-bound, bound] after its update; 0: unbounded (the paper states none)")
+          .Ours(),
       ParamSpec::Double("penalty_factor", d.penalty_factor, 0.0, 1e9, "",
                         "penalty N for a path through an obstacle, times the map's diagonal")
           .Ours(),
@@ -377,6 +403,7 @@ BinaryPsoParams BinaryPsoParams::From(const ParamSet& set) {
   p.v_max = set.Double("v_max");
   p.penalty_factor = set.Double("penalty_factor");
   p.circle_tolerance = set.Double("circle_tolerance");
+  p.assistant_bound = set.Double("assistant_bound");
   p.max_vertices = static_cast<int>(set.Int("max_vertices"));
   p.max_swarm = static_cast<int>(set.Int("max_swarm"));
   p.corridor_cap = set.Double("corridor_cap");
@@ -423,7 +450,7 @@ absl::StatusOr<SearchResult> BinaryPsoPlanner::Solve(const Problem& problem, con
           static_cast<int>(vertices.size()), params_.max_vertices));
     }
     BinaryPsoSearch search(params_, problem, OrderAlongStartGoal(problem, vertices), {},
-                           std::move(blocked), penalty);
+                           std::move(blocked), penalty, trace_);
     return search.Run(stop, observer);
   }
 
@@ -447,7 +474,7 @@ absl::StatusOr<SearchResult> BinaryPsoPlanner::Solve(const Problem& problem, con
     return !exact->SegmentFree(Point3(a.x(), a.y(), 0), Point3(b.x(), b.y(), 0), clearance);
   };
   BinaryPsoSearch search(params_, problem, std::move(selected.vertices),
-                         std::move(selected.patterns), std::move(exact_blocked), penalty);
+                         std::move(selected.patterns), std::move(exact_blocked), penalty, trace_);
   SearchResult result = search.Run(stop, observer);
   const SeedPath& best = seeds->front();
   if (!result.found || result.fitness > best.length) {

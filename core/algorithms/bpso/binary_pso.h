@@ -34,6 +34,7 @@ struct BinaryPsoParams {
   double w_max = 0.9;
   double w_min = 0.4;
   double v_max = 4.0;               // ours
+  double assistant_bound = 0.0;     // |assistant position| at most this; 0: unbounded (ours)
   double penalty_factor = 100.0;    // N = factor * the map's diagonal (ours: "very large")
   double circle_tolerance = 0.002;  // circles as polygons, times the world's larger side (ours)
   int max_vertices = 2000;          // init=paper: more vertices are refused (ours)
@@ -47,14 +48,29 @@ struct BinaryPsoParams {
   static BinaryPsoParams From(const ParamSet& set);
 };
 
+// An assistant position beyond this magnitude has sigmoid above 0.99 or below 0.01 (ln 99): its
+// bit is redrawn against it in fewer than 1 % of updates.
+inline constexpr double kSaturatedAssistant = 4.595119850134589;
+
+// What the double structure's assistant positions did, iteration by iteration, for experiments
+// that look inside a search (the server never asks for it).
+struct AssistantTrace {
+  std::vector<double> saturated_fraction;  // of all positions, |x| >= kSaturatedAssistant
+  std::vector<double> mean_magnitude;      // mean |x| over all positions
+};
+
 class BinaryPsoPlanner final : public Planner {
  public:
   explicit BinaryPsoPlanner(BinaryPsoParams params) : params_(params) {}
   absl::StatusOr<SearchResult> Solve(const Problem& problem, const StopToken& stop,
                                      Observer& observer) override;
+  // The next Solve records its assistant positions after every iteration into `trace` (cleared
+  // first); null stops recording. The trace must outlive the Solve.
+  void TraceAssistants(AssistantTrace* trace) { trace_ = trace; }
 
  private:
   BinaryPsoParams params_;
+  AssistantTrace* trace_ = nullptr;
 };
 
 // The most candidate vertices a seeded bpso accepts (FAILED_PRECONDITION beyond).
