@@ -17,6 +17,7 @@
 #include "bench/papers/aem_bso_worlds_generate.h"
 #include "bench/papers/aem_bso_worlds_replicated.h"
 #include "bench/papers/aem_bso_worlds_runs.h"
+#include "bench/papers/aem_bso_worlds_variants.h"
 #include "bench/papers/comparison.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
@@ -46,19 +47,6 @@ constexpr int kQuickRuns = 2;
 constexpr int kQuickIterations = 20;
 constexpr int kReplicatedRuns = 10;  // per world of the ten-world Table 3
 constexpr int kQuickReplicatedWorlds = 2;
-// velocity_fraction for the runs without a velocity clamp: ten times the span of the box, more
-// than any step can use.
-constexpr double kUnclampedVelocity = 10.0;
-// An unclamped swarm's spread of lengths "comes close" to the paper's from this fraction of its
-// standard deviation on.
-constexpr double kCloseSpread = 0.5;
-// The planners with a velocity clamp (velocity_fraction) that the paper's baselines may lack.
-const std::vector<std::string>& VelocityPlanners() {
-  static const std::vector<std::string>* const planners =
-      new std::vector<std::string>{"bso", "pso"};
-  return *planners;
-}
-
 const std::vector<std::string>& Planners() {
   static const std::vector<std::string>* const planners =
       new std::vector<std::string>{"aem-bso", "aem-bso-linear", "bso", "pso", "ba"};
@@ -114,7 +102,7 @@ struct WorldRun {
   double optimum = 0.0;
   double straight = 0.0;
   std::map<std::pair<std::string, std::string>, CellStats> cells;  // (planner, interpolation)
-  std::map<std::string, CellStats> unclamped;  // VelocityPlanners() with the spline, no clamp
+  aem_bso::VariantRuns variants;  // the baselines' unstated settings, equal budgets
 };
 
 absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentOptions& options,
@@ -140,14 +128,10 @@ absl::StatusOr<WorldRun> RunWorld(const AemBsoWorldSpec& spec, const ExperimentO
       out.cells[{planner, interpolation}] = *std::move(cell);
     }
   }
-  for (const std::string& planner : VelocityPlanners()) {
-    PlanSpec plan = PaperPlan(planner, "spline", iterations);
-    plan.params["velocity_fraction"] = kUnclampedVelocity;
-    absl::StatusOr<CellStats> cell =
-        RunCell(plan, map, options, runs, absl::StrCat(spec.name, " ", planner, " unclamped"));
-    if (!cell.ok()) return cell.status();
-    out.unclamped[planner] = *std::move(cell);
-  }
+  absl::StatusOr<aem_bso::VariantRuns> variants =
+      aem_bso::RunVariants(spec.name, map, options, runs, iterations);
+  if (!variants.ok()) return variants.status();
+  out.variants = *std::move(variants);
   return out;
 }
 
@@ -248,68 +232,9 @@ std::string SignificanceSection(const std::vector<WorldRun>& worlds, std::string
   return out;
 }
 
-// bso and pso with and without the velocity clamp, with the paper's Table 3 beside them; the
-// summary compares the spread of their lengths.
-std::string VelocityClampSection(const std::vector<WorldRun>& worlds, std::string* summary) {
-  std::string out = "## Without a velocity clamp\n\n";
-  absl::StrAppend(
-      &out,
-      absl::StrFormat(
-          "bso and pso with the spline as in Table 3, and again with `velocity_fraction` = %g "
-          "(a velocity bound of %g times the box's span: no bound in effect). *rank-sum*: the "
-          "lengths of the found runs, clamped against unclamped.\n\n",
-          kUnclampedVelocity, kUnclampedVelocity));
-  std::string listed;
-  int compared = 0, close = 0;
-  MarkdownTable table(
-      {"environment", "planner", "velocity", "found", "shortest", "mean", "std",
-       "mean z (all runs)", "rank-sum (length)", "paper shortest", "paper mean", "paper std"},
-      3);
-  for (const WorldRun& w : worlds) {
-    for (const std::string& planner : VelocityPlanners()) {
-      const CellStats& clamped = w.cells.at({planner, "spline"});
-      const CellStats& unclamped = w.unclamped.at(planner);
-      const std::optional<PaperCell> paper = PaperTable3(w.spec.name, planner);
-      const std::optional<double> p = RankSumP(clamped.lengths, unclamped.lengths);
-      for (const bool free : {false, true}) {
-        const CellStats& c = free ? unclamped : clamped;
-        table.AddRow({w.spec.name, planner, free ? "unclamped" : "clamped (20 %)", FoundCell(c),
-                      NumberCell(Min(c.lengths)), NumberCell(Mean(c.lengths)),
-                      NumberCell(StdDev(c.lengths)), NumberCell(Mean(c.fitnesses)),
-                      free ? PValueCell(p) : "", PaperNumber(paper, &PaperCell::shortest),
-                      PaperNumber(paper, &PaperCell::mean),
-                      PaperNumber(paper, &PaperCell::std_dev)});
-      }
-      absl::StrAppend(
-          &listed, listed.empty() ? "" : "; ", w.spec.name, " ", planner, " std ",
-          NumberCell(StdDev(clamped.lengths)), " clamped, ", NumberCell(StdDev(unclamped.lengths)),
-          " unclamped (paper ", PaperNumber(paper, &PaperCell::std_dev), "; mean ",
-          NumberCell(Mean(clamped.lengths)), " and ", NumberCell(Mean(unclamped.lengths)), ", ",
-          p.has_value() ? FormatPValue(*p, /*mark_significant=*/false) : "–", ")");
-      const double paper_std = paper.has_value() ? paper->std_dev.value_or(0.0) : 0.0;
-      const double ours = StdDev(unclamped.lengths).value_or(0.0);
-      if (paper_std > 0) {
-        ++compared;
-        if (ours >= kCloseSpread * paper_std) ++close;
-      }
-    }
-  }
-  const char* verdict = close == 0 ? "so the missing clamp does not explain the paper's spread"
-                        : close < compared
-                            ? "so the missing clamp explains part of the paper's spread at most"
-                            : "so the missing clamp comes close to the paper's spread";
-  absl::StrAppend(summary, listed,
-                  absl::StrFormat(": in %d of %d cases the unclamped runs' "
-                                  "standard deviation reaches half the paper's, ",
-                                  close, compared),
-                  verdict);
-  absl::StrAppend(&out, table.ToString(), "\n");
-  return out;
-}
-
 std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
                        const std::string& significant, const std::string& replicated,
-                       const std::string& velocity) {
+                       const std::string& unstated, const std::string& equal_budget) {
   std::string out = "## Discussion\n\n";
   for (const WorldRun& w : worlds) {
     const CellStats& aem = w.cells.at({"aem-bso", "spline"});
@@ -475,12 +400,16 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       "our *mean z* column, penalty included, is not what it reports. Runs that "
       "ended penalised here, with the spline: ",
       penalised,
-      ". One candidate cause of long valid paths is a swarm without a velocity clamp, which the "
-      "paper never mentions (*Without a velocity clamp* above): the lengths' standard deviation "
-      "clamped and unclamped, ",
-      velocity,
-      ". The other candidate, baselines that let positions leave the box (ours clamp every "
-      "position to the map), is not tested: our planners have no option for it. Our worlds are "
+      ". Candidate causes of long valid paths are settings the paper does not state: no "
+      "velocity bound in BSO and PSO, a velocity bound or another pulse rate schedule in BA "
+      "(*The baselines' unstated settings* above): ",
+      unstated,
+      ". Another candidate, baselines that let positions leave the box, is not tested: our "
+      "planners clamp every position to the map, and a path that leaves the map counts as a "
+      "collision in the penalty, where the paper's worlds have no boundary. At equal evaluation "
+      "budgets (*Equal evaluation budgets* above): ",
+      equal_budget,
+      ". Our worlds are "
       "not theirs (unpublished), and several settings are ours because the paper gives none: "
       "the waypoint "
       "count (3), the spline samples (100), the velocity clamp (20% of the span) and the "
@@ -540,7 +469,7 @@ std::string Report(const std::vector<WorldRun>& worlds, const Replication& repli
       "| w_max, w_min, c1..c3 | 0.9, 0.4, 1.49 (PSO: c1 = c2 = 1.49) | same (PSO's own default "
       "c1 = c2 = 2 is overridden) |\n"
       "| BA | parameters not given | our `ba` defaults (f in [0, 2], A0 = 1, r0 = 0.5, alpha = "
-      "gamma = 0.9) |\n"
+      "gamma = 0.9, pulse rate set on accept, no velocity bound) |\n"
       "| k1, k2, k3 (elite mutation) | not given | 0.1, 0.1, -1 (ours) |\n"
       "| yardstick | none | exact shortest path keeping 1.5 (`visibility-graph`, circle "
       "tolerance 0.01) |\n\n");
@@ -633,18 +562,34 @@ std::string Report(const std::vector<WorldRun>& worlds, const Replication& repli
     }
   }
   absl::StrAppend(&out, others.ToString(), "\n");
-  std::string significant, velocity, replicated;
+  std::string significant, unstated, equal_budget, replicated;
   absl::StrAppend(&out, SignificanceSection(worlds, &significant));
   absl::StrAppend(&out, aem_bso::ReplicatedSection(replication.environments, Planners(), "aem-bso",
                                                    replication.runs, options.seed, &replicated));
-  absl::StrAppend(&out, VelocityClampSection(worlds, &velocity));
+  std::vector<aem_bso::VariantRuns> variant_runs;
+  for (const WorldRun& w : worlds) variant_runs.push_back(w.variants);
+  const aem_bso::OurCell ours = [&worlds](const std::string& environment,
+                                          const std::string& planner) -> const CellStats& {
+    for (const WorldRun& w : worlds) {
+      if (w.spec.name == environment) return w.cells.at({planner, "spline"});
+    }
+    return worlds.front().cells.at({planner, "spline"});
+  };
+  const aem_bso::PaperStdDev paper_std = [](const std::string& environment,
+                                            const std::string& planner) {
+    const std::optional<PaperCell> cell = PaperTable3(environment, planner);
+    return cell.has_value() ? cell->std_dev : std::nullopt;
+  };
+  absl::StrAppend(&out, aem_bso::UnstatedSettingsSection(variant_runs, ours, paper_std, &unstated));
+  absl::StrAppend(&out, aem_bso::EqualBudgetSection(variant_runs, ours, iterations, &equal_budget));
   const size_t drawn =
       replication.environments.empty() ? 0 : replication.environments[0].worlds.size();
   replicated = absl::StrCat("With every environment drawn ", drawn, " times (*Table 3 on ", drawn,
                             " worlds per environment* above), the differences from aem-bso "
                             "that the tests support are: ",
                             replicated);
-  absl::StrAppend(&out, Discussion(worlds, iterations, significant, replicated, velocity));
+  absl::StrAppend(&out,
+                  Discussion(worlds, iterations, significant, replicated, unstated, equal_budget));
   return out;
 }
 

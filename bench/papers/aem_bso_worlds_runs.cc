@@ -51,6 +51,7 @@ absl::StatusOr<CellStats> RunCell(const PlanSpec& plan, const MapPtr& map,
     cell.seconds.push_back(absl::ToDoubleSeconds(result->wall_time));
     cell.cpu_seconds.push_back(absl::ToDoubleSeconds(result->cpu_time));
     cell.best_iterations.push_back(result->best_iteration);
+    cell.evaluations.push_back(static_cast<double>(result->evaluations));
   }
   if (options.log != nullptr) {
     *options.log << absl::StrFormat(

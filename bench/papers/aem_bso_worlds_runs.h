@@ -26,6 +26,7 @@ struct CellStats {
   std::vector<double> seconds;    // wall time of every run
   std::vector<double> cpu_seconds;
   std::vector<double> best_iterations;
+  std::vector<double> evaluations;  // fitness evaluations of every run
 
   int found() const { return static_cast<int>(lengths.size()); }
   SuccessCount Found() const { return {found(), runs}; }
