@@ -12,6 +12,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "bench/papers/bpso_vertices_assistant.h"
 #include "bench/papers/bpso_vertices_discussion.h"
 #include "bench/papers/bpso_vertices_figures.h"
 #include "bench/papers/bpso_vertices_paper.h"
@@ -42,6 +43,9 @@ absl::StatusOr<std::string> RunBpsoVertices(const ExperimentOptions& options) {
   const int replicated_runs = options.quick ? runs : std::min(runs, kReplicatedRuns);
   absl::StatusOr<bpso::FigureRuns> figures = bpso::RunFigures(options, runs, iterations);
   if (!figures.ok()) return figures.status();
+  absl::StatusOr<std::vector<bpso::AssistantWorld>> assistant =
+      bpso::RunAssistantWorlds(*figures, options.seed, runs, iterations, options.log);
+  if (!assistant.ok()) return assistant.status();
   absl::StatusOr<std::vector<bpso::ReplicatedVertexCount>> replicated =
       bpso::RunReplicatedBpsoWorlds(options, replicated_worlds, replicated_runs, iterations);
   if (!replicated.ok()) return replicated.status();
@@ -126,8 +130,11 @@ absl::StatusOr<std::string> RunBpsoVertices(const ExperimentOptions& options) {
       "Final lengths, iterations of the final best and found runs, each algorithm against the "
       "paper's (rank-sum; Fisher):\n\n",
       bpso::ConvergenceTestTable(*figures), "\n");
+  std::string assistant_item;
+  absl::StrAppend(&report, bpso::AssistantSection(*figures, *assistant, &assistant_item));
   absl::StrAppend(&report, bpso::ReplicatedBpsoSection(*replicated, replicated_runs, options.seed));
-  absl::StrAppend(&report, bpso::Discussion(*figures, bpso::ReplicatedBpsoSummary(*replicated)));
+  absl::StrAppend(&report, bpso::Discussion(*figures, assistant_item,
+                                            bpso::ReplicatedBpsoSummary(*replicated)));
   return report;
 }
 

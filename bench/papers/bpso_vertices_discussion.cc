@@ -230,10 +230,7 @@ std::string ConvergenceItem(const FigureRuns& figures) {
       ". Our `ga` is not the paper's (which is not described): it is the grid GA of the AS-BFO "
       "paper on the world rasterised at resolution 4, whose initial paths are joined by A*, so "
       "it starts near its best 8-connected grid path and its length stays above the any-angle "
-      "optimum by the grid's detour. In plain BPSO each bit is redrawn every iteration with "
-      "probability sigmoid(v) of a clamped v, so the swarm keeps sampling around gbest; in the "
-      "double structure the unclamped assistant positions can drift far from 0 and freeze the "
-      "bits, leaving mutation as the main exploration (our reading, not instrumented).\n");
+      "optimum by the grid's detour.\n");
 }
 
 std::string AbsoluteFitnessItem(const FigureRuns& figures) {
@@ -271,7 +268,8 @@ std::string PaperOverOurTimeRange(const FigureRuns& figures) {
   return absl::StrCat(Range(PaperOverOurTimes(figures), 3), " times");
 }
 
-std::string Discussion(const FigureRuns& figures, const std::string& replicated_summary) {
+std::string Discussion(const FigureRuns& figures, const std::string& assistant_item,
+                       const std::string& replicated_summary) {
   return absl::StrCat(
       "## Discussion\n\n",
       absl::StrFormat(
@@ -279,8 +277,8 @@ std::string Discussion(const FigureRuns& figures, const std::string& replicated_
           "numbers; a difference is named only when its test gives p < %g.\n\n",
           figures.runs, kSignificanceLevel),
       "**On the shipped worlds.**\n\n", SwarmSizeItem(figures), MutationItem(figures),
-      ConvergenceItem(figures), AbsoluteFitnessItem(figures), "\n**On the drawn worlds.**\n\n",
-      replicated_summary);
+      ConvergenceItem(figures), assistant_item, AbsoluteFitnessItem(figures),
+      "\n**On the drawn worlds.**\n\n", replicated_summary);
 }
 
 }  // namespace swarmplan::bench::bpso

@@ -10,8 +10,10 @@
 
 namespace swarmplan::bench::bpso {
 
-// `replicated_summary`: the items of ReplicatedBpsoSummary.
-std::string Discussion(const FigureRuns& figures, const std::string& replicated_summary);
+// `assistant_item`: AssistantSection's summary; `replicated_summary`: the items of
+// ReplicatedBpsoSummary.
+std::string Discussion(const FigureRuns& figures, const std::string& assistant_item,
+                       const std::string& replicated_summary);
 
 // The range of the paper's times over ours in Table 1 as the discussion quotes it, "A to B
 // times", each end formatted as its table cell.
