@@ -16,6 +16,10 @@ namespace swarmplan::bench {
 std::string WithoutSections(absl::string_view report,
                             const std::vector<std::string>& skipped_headings);
 
+// The report with every cell of its Markdown tables' time columns (a header that mentions
+// "time" or "s/run") left empty, since wall times differ from run to run.
+std::string WithoutTimeColumns(absl::string_view report);
+
 // FNV-1a (64 bit) of WithoutSections(report, skipped_headings), as 16 hexadecimal digits.
 std::string ReportDigest(absl::string_view report,
                          const std::vector<std::string>& skipped_headings);

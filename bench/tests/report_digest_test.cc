@@ -27,5 +27,15 @@ TEST(ReportDigestTest, IgnoresSkippedSectionsAndSeesEveryOtherCharacter) {
   EXPECT_EQ(ReportDigest("", {}), "af63c74c8601c8dd");
 }
 
+TEST(ReportDigestTest, BlanksTheTimeColumnsOfEveryTable) {
+  const std::string report =
+      "text with time 1.2\n\n| planner | s/run | length | mean time (s) |\n|---|---:|---:|---:|\n"
+      "| a | 0.5 | 10 | 0.7 |\n| b | 0.6 | 11 | 0.8 |\n\n| time |\n|---|\n| 3 |\n";
+  EXPECT_EQ(
+      WithoutTimeColumns(report),
+      "text with time 1.2\n\n| planner | s/run | length | mean time (s) |\n|---|---:|---:|---:|\n"
+      "| a | | 10 | |\n| b | | 11 | |\n\n| time |\n|---|\n| |\n\n");
+}
+
 }  // namespace
 }  // namespace swarmplan::bench
