@@ -52,6 +52,8 @@ absl::StatusOr<CellStats> RunCell(const PlanSpec& plan, const MapPtr& map,
     cell.cpu_seconds.push_back(absl::ToDoubleSeconds(result->cpu_time));
     cell.best_iterations.push_back(result->best_iteration);
     cell.evaluations.push_back(static_cast<double>(result->evaluations));
+    std::vector<double>& curve = cell.convergence.emplace_back();
+    for (const IterationStats& stats : result->convergence) curve.push_back(stats.best_fitness);
   }
   if (options.log != nullptr) {
     *options.log << absl::StrFormat(

@@ -26,7 +26,8 @@ struct CellStats {
   std::vector<double> seconds;    // wall time of every run
   std::vector<double> cpu_seconds;
   std::vector<double> best_iterations;
-  std::vector<double> evaluations;  // fitness evaluations of every run
+  std::vector<double> evaluations;               // fitness evaluations of every run
+  std::vector<std::vector<double>> convergence;  // [run][iteration]: best z so far
 
   int found() const { return static_cast<int>(lengths.size()); }
   SuccessCount Found() const { return {found(), runs}; }
