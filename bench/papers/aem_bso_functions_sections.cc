@@ -155,6 +155,7 @@ std::string ParameterLine(const std::string& planner_id) {
                                                               "f_max",
                                                               "loudness0",
                                                               "pulse_rate0",
+                                                              "pulse_schedule",
                                                               "alpha",
                                                               "gamma",
                                                               "walk_fraction"};

@@ -47,7 +47,7 @@ TEST(AemBsoFunctionsReportTest, HasEveryComparisonTheTableNeeds) {
 TEST(AemBsoFunctionsReportTest, QuickReportDigestIsPinned) {
   absl::StatusOr<std::string> report = QuickReport(2);
   ASSERT_TRUE(report.ok());
-  EXPECT_EQ(ReportDigest(*report, kTimedSections), "849ab1393ebc4e12");
+  EXPECT_EQ(ReportDigest(*report, kTimedSections), "874483f5e6e98c75");
 }
 
 }  // namespace
