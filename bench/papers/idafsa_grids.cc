@@ -1,6 +1,7 @@
 // IDAFSA paper (seed 003), Tables 2-3: the fish swarm family on 10 x 10 and 20 x 20 grids, idafsa
 // tested against the others, the Bezier-smoothed paths' curvature (its Fig. 19), what limits
-// idafsa (ablation) and the planners on ten drawn worlds per grid size.
+// idafsa (ablation), the planners on ten drawn worlds per grid size, and the per-claim verdicts
+// with the moves used before issue 15 against those with the paper's moves.
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "absl/time/time.h"
 #include "bench/papers/comparison.h"
 #include "bench/papers/experiments.h"
+#include "bench/papers/idafsa_grids_moves.h"
 #include "bench/papers/idafsa_grids_replicated.h"
 #include "bench/papers/idafsa_grids_runs.h"
 #include "bench/papers/idafsa_grids_significance.h"
@@ -97,6 +99,8 @@ std::vector<AblationRow> AblationRows() {
       {{"idafsa, fixed visual (no eq 9)", "idafsa", {{"dynamic_visual", false}}}, 1},
       {{"idafsa, fixed step (no eqs 10-11)", "idafsa", {{"adaptive_step", false}}}, 1},
       {{"idafsa, 3 x MAXGEN", "idafsa", {}}, 3},
+      {WithRandomCloserMoves({"idafsa, random-closer moves (before issue 15)", "idafsa", {}}), 1},
+      {{"idafsa, no prey culling", "idafsa", {{"prey_culling", false}}}, 1},
   };
 }
 
@@ -114,8 +118,9 @@ struct WorldResult {
   MapPtr map;
   PlanResult astar, theta;
   std::optional<double> optimum_4, optimum_8, optimum_24;
-  std::vector<FishRunStats> rows;      // as TableRows()
-  std::vector<FishRunStats> ablation;  // as AblationRows()
+  std::vector<FishRunStats> rows;           // as TableRows()
+  std::vector<FishRunStats> random_closer;  // as TableRows(), with WithRandomCloserMoves
+  std::vector<FishRunStats> ablation;       // as AblationRows()
 };
 
 std::optional<double> OptimumOf(const WorldResult& r, Neighbourhood n) {
@@ -145,8 +150,7 @@ std::string WorldSection(const WorldResult& r, const std::vector<TableRow>& rows
                          "ours", "mean: paper", "ours", "ours, all arrivals",
                          "optimum of its moves"});
   MarkdownTable others({"planner", "success", "cut a corner", "jumped a blocked cell", "no path",
-                        "mean turning points", "mean iterations run", "mean iteration of best",
-                        "mean time (ms)"});
+                        "mean turning points", "mean iterations run", "mean iteration of best"});
   for (size_t i = 0; i < rows.size(); ++i) {
     const TableRow& row = rows[i];
     const FishRunStats& st = r.rows[i];
@@ -158,22 +162,22 @@ std::string WorldSection(const WorldResult& r, const std::vector<TableRow>& rows
     others.AddRow({row.config.label, Success(st), Count(st.cut_corner, st.runs),
                    Count(st.jumped, st.runs), Count(st.no_path(), st.runs),
                    NumberCell(Mean(st.turning_points), 3), NumberCell(Mean(st.iterations), 3),
-                   NumberCell(Mean(st.best_iterations), 3), NumberCell(Mean(st.millis), 3)});
+                   NumberCell(Mean(st.best_iterations), 3)});
   }
   for (const PlanResult* ref : {&r.astar, &r.theta}) {
     const std::string len = Length(ref->raw_metrics.length);
     lengths.AddRow(
         {absl::StrCat(ref->algorithm, " (reference)"), "–", len, "–", len, "–", len, len, "–"});
     others.AddRow({ref->algorithm, "100%", "0 / 1", "0 / 1", "0 / 1",
-                   NumberCell(ref->raw_metrics.turning_points, 3), "1", "0",
-                   NumberCell(absl::ToDoubleMilliseconds(ref->wall_time), 3)});
+                   NumberCell(ref->raw_metrics.turning_points, 3), "1", "0"});
   }
   absl::StrAppend(&out,
                   "Path lengths. \"ours\" are the successful runs (collision-free paths); \"all "
                   "arrivals\" also counts the `afsa` paths that cut a corner or jumped a cell:\n\n",
                   lengths.ToString(),
                   "\nThe paper's Figs. 14/18 (turning points, time, accuracy) and 15/17 "
-                  "(iterations) are plots without numbers in the text; ours:\n\n",
+                  "(iterations) are plots without numbers in the text; ours (times: section "
+                  "\"Time per run\"):\n\n",
                   others.ToString(), "\n");
   return out;
 }
@@ -181,16 +185,23 @@ std::string WorldSection(const WorldResult& r, const std::vector<TableRow>& rows
 // The runs of idafsa (TableRows()[kIdafsaRow]) against the other rows and the ablation variants.
 constexpr size_t kIdafsaRow = 4;
 
+ComparedRuns IdafsaRuns(const std::vector<FishRunStats>& stats, const std::vector<TableRow>& rows) {
+  return CompareRunsOf(rows[kIdafsaRow].config.label, stats[kIdafsaRow]);
+}
 ComparedRuns IdafsaRuns(const WorldResult& r, const std::vector<TableRow>& rows) {
-  return CompareRunsOf(rows[kIdafsaRow].config.label, r.rows[kIdafsaRow]);
+  return IdafsaRuns(r.rows, rows);
 }
 
-std::vector<ComparedRuns> BaselineRuns(const WorldResult& r, const std::vector<TableRow>& rows) {
+std::vector<ComparedRuns> BaselineRuns(const std::vector<FishRunStats>& stats,
+                                       const std::vector<TableRow>& rows) {
   std::vector<ComparedRuns> baselines;
   for (size_t i = 0; i < rows.size(); ++i) {
-    if (i != kIdafsaRow) baselines.push_back(CompareRunsOf(rows[i].config.label, r.rows[i]));
+    if (i != kIdafsaRow) baselines.push_back(CompareRunsOf(rows[i].config.label, stats[i]));
   }
   return baselines;
+}
+std::vector<ComparedRuns> BaselineRuns(const WorldResult& r, const std::vector<TableRow>& rows) {
+  return BaselineRuns(r.rows, rows);
 }
 
 std::string SignificanceSection(const WorldResult& r, const std::vector<TableRow>& rows,
@@ -216,19 +227,21 @@ std::string SignificanceSection(const WorldResult& r, const std::vector<TableRow
 std::string AblationSection(const std::vector<WorldResult>& results,
                             const std::vector<AblationRow>& rows, int generations) {
   MarkdownTable table({"world", "configuration", "MAXGEN", "success", "shortest", "mean",
-                       "mean iteration of best", "mean time (ms)"});
+                       "mean iteration of best"});
   for (const WorldResult& r : results) {
     for (size_t i = 0; i < rows.size(); ++i) {
       const FishRunStats& st = r.ablation[i];
       table.AddRow({absl::StrCat(r.world.size, "x", r.world.size), rows[i].config.label,
                     absl::StrCat(generations * rows[i].generation_factor), Success(st),
                     Length(Min(st.lengths)), Length(Mean(st.lengths)),
-                    NumberCell(Mean(st.best_iterations), 3), NumberCell(Mean(st.millis), 3)});
+                    NumberCell(Mean(st.best_iterations), 3)});
     }
   }
   return absl::StrCat(
       "## What limits idafsa (ours, not in the paper)\n\n"
-      "idafsa with one of its additions switched off at a time, same seeds:\n\n",
+      "idafsa with one of its additions switched off at a time, same seeds; the last two rows "
+      "are the moves used before issue 15 (random-closer moves, no prey culling) and the paper's "
+      "moves without the culled factor:\n\n",
       table.ToString(), "\n");
 }
 
@@ -302,7 +315,7 @@ std::string AblationSuccess(const WorldResult& r, size_t variant) {
 }
 
 std::string Discussion(const std::vector<WorldResult>& results, const std::vector<TableRow>& rows,
-                       const std::string& replicated_summary) {
+                       const std::string& replicated_summary, const std::string& moves_summary) {
   const size_t kIdafsa = kIdafsaRow, kDafsa = 3, kAfsa8 = 1, kAfsa24 = 2;
   std::string out = "## Discussion\n\n";
   absl::StrAppend(
@@ -380,14 +393,37 @@ std::string Discussion(const std::vector<WorldResult>& results, const std::vecto
       &out,
       "- **Paths longer than the paper's.** Our `dafsa` and `afsa` return the first arrival "
       "(loops removed) and stay well above the optimum of their moves, with many turning points; "
-      "the paper's rows have means within 1-6% of their own shortest path. Our fish step "
-      "to a random valid move that gets closer to the target (ALGORITHMS.md's reading of eqs "
-      "3-5); a 24-neighbourhood has many such moves, up to 90° off the target's direction, so "
-      "trails zigzag. The paper's MATLAB code is not public; rounding "
-      "X + step·(X_j − X)/|X_j − X| to a cell, as its equations suggest, would keep to the "
-      "direction and give straighter trails. Its flow chart (Step 5) also ends IDAFSA at the "
-      "first arrival, choosing among the fish that arrived; ours keeps collecting arrivals for "
-      "all MAXGEN generations, which can only shorten its answer.\n");
+      "the paper's rows have means within 1-6% of their own shortest path. A fish steps along "
+      "eqs 3-5: to the valid move closer to its target that is nearest to "
+      "X + rand()·step·(X_j − X)/||X_j − X|| (our reading on a grid; the paper's MATLAB code is "
+      "not public). rand() shortens the step at random, so a fish often takes a short move a "
+      "little off the target's direction, and trails still bend. Its flow chart (Step 5) also "
+      "ends IDAFSA at the first arrival, choosing among the fish that arrived; ours keeps "
+      "collecting arrivals for all MAXGEN generations, which can only shorten its answer.\n");
+  const size_t kRandomCloser = 4, kNoCulling = 5;
+  for (const WorldResult& r : results) {
+    const FishRunStats& now = r.rows[kIdafsa];
+    const FishRunStats& before = r.ablation[kRandomCloser];
+    const FishRunStats& unculled = r.ablation[kNoCulling];
+    absl::StrAppend(
+        &out,
+        absl::StrFormat(
+            "- **The paper's moves on %d x %d** (issue 15). idafsa: success %s with eqs 3-5 and "
+            "the culled factor, %s with the random-closer moves (Fisher's test), %s without "
+            "culling; mean length %s against %s (rank-sum %s) and %s without culling (rank-sum "
+            "%s). dafsa: mean length %s against %s with random-closer moves (rank-sum %s).\n",
+            r.world.size, r.world.size, Success(now), AblationSuccess(r, kRandomCloser),
+            AblationSuccess(r, kNoCulling), Length(Mean(now.lengths)), Length(Mean(before.lengths)),
+            PInText(RankSumP(now.lengths, before.lengths)), Length(Mean(unculled.lengths)),
+            PInText(RankSumP(now.lengths, unculled.lengths)), Length(Mean(r.rows[kDafsa].lengths)),
+            Length(Mean(r.random_closer[kDafsa].lengths)),
+            PInText(RankSumP(r.rows[kDafsa].lengths, r.random_closer[kDafsa].lengths))));
+  }
+  absl::StrAppend(&out,
+                  "- **Do the paper's moves change the verdicts?** Over the shipped worlds, the "
+                  "drawn worlds' pooled runs and the paired tests across worlds (section \"The "
+                  "moves before issue 15\"), ",
+                  moves_summary, ".\n");
   const size_t kPaperSettings = 0, kFixedVisual = 1, kFixedStep = 2, kLonger = 3;
   for (const WorldResult& r : results) {
     absl::StrAppend(
@@ -460,21 +496,72 @@ std::string Discussion(const std::vector<WorldResult>& results, const std::vecto
           "which is what the paper claims; it shows the smoothed curves (Fig. 19) but no "
           "curvature values, so this part cannot be compared number for number.\n",
           smoothed_free, smoothed, sharp, 100.0 * (1.0 - worst_ratio), within, smoothed));
-  std::vector<std::string> ratios;
+  return out;
+}
+
+// The paper's claims for idafsa tested on each shipped world, on each grid size's drawn worlds
+// pooled and paired across them; with the main moves or the random-closer ones.
+std::vector<VerdictScope> VerdictScopes(const std::vector<WorldResult>& results,
+                                        const std::vector<ReplicatedIdafsaGrid>& replicated,
+                                        const std::vector<TableRow>& rows, bool random_closer) {
+  std::vector<FishConfig> configs;
+  for (const TableRow& row : rows) configs.push_back(row.config);
+  std::vector<VerdictScope> scopes;
   for (const WorldResult& r : results) {
-    if (auto i = Mean(r.rows[kIdafsa].millis), d = Mean(r.rows[kDafsa].millis); i && d && *d > 0) {
-      ratios.push_back(
-          absl::StrFormat("%.1f x on %d x %d (rank-sum %s)", *i / *d, r.world.size, r.world.size,
-                          PInText(RankSumP(r.rows[kIdafsa].millis, r.rows[kDafsa].millis))));
+    const std::vector<FishRunStats>& stats = random_closer ? r.random_closer : r.rows;
+    scopes.push_back({absl::StrFormat("%d x %d, shipped world", r.world.size, r.world.size),
+                      HeadlineClaims(IdafsaRuns(stats, rows), BaselineRuns(stats, rows))});
+  }
+  for (const ReplicatedIdafsaGrid& grid : replicated) {
+    scopes.push_back({absl::StrFormat("%d x %d, drawn worlds pooled", grid.size, grid.size),
+                      PooledClaims(grid, configs, kIdafsaRow)});
+    scopes.push_back({absl::StrFormat("%d x %d, across drawn worlds", grid.size, grid.size),
+                      AcrossWorldClaims(grid, configs, kIdafsaRow)});
+  }
+  return scopes;
+}
+
+std::string MeanMillis(const FishRunStats& st) { return NumberCell(Mean(st.millis), 3); }
+
+// Wall times, apart from the other sections: they differ from run to run.
+std::string TimeSection(const std::vector<WorldResult>& results, const std::vector<TableRow>& rows,
+                        const std::vector<AblationRow>& ablation) {
+  MarkdownTable table({"world", "configuration", "paper's time", "ours: mean per run (ms)",
+                       "ours with random-closer moves (ms)"});
+  for (const WorldResult& r : results) {
+    const std::string world = absl::StrCat(r.world.size, "x", r.world.size);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      table.AddRow({world, rows[i].config.label, "plot only (Figs. 14/18)", MeanMillis(r.rows[i]),
+                    MeanMillis(r.random_closer[i])});
+    }
+    for (size_t i = 1; i < ablation.size(); ++i) {
+      table.AddRow({world, ablation[i].config.label, "–", MeanMillis(r.ablation[i]), "–"});
+    }
+    for (const PlanResult* ref : {&r.astar, &r.theta}) {
+      table.AddRow({world, absl::StrCat(ref->algorithm, " (reference)"), "–",
+                    NumberCell(absl::ToDoubleMilliseconds(ref->wall_time), 3), "–"});
     }
   }
-  absl::StrAppend(&out,
-                  "- **Time.** The paper gives times only in plots. idafsa runs all MAXGEN "
-                  "generations and takes ",
-                  absl::StrJoin(ratios, ", "),
-                  " dafsa's time; the paper also says its operations \"relatively increased\". "
-                  "Times are from a shared, loaded 2-core machine: compare ratios.\n");
-  return out;
+  const size_t kDafsa = 3;
+  std::vector<std::string> ratios;
+  for (const WorldResult& r : results) {
+    const FishRunStats& idafsa = r.rows[kIdafsaRow];
+    for (const auto& [other, what] :
+         {std::pair{&r.rows[kDafsa], "dafsa's"},
+          std::pair{&r.random_closer[kIdafsaRow], "idafsa's with random-closer moves"}}) {
+      if (auto i = Mean(idafsa.millis), o = Mean(other->millis); i && o && *o > 0) {
+        ratios.push_back(absl::StrFormat("%.1f x %s on %d x %d (rank-sum %s)", *i / *o, what,
+                                         r.world.size, r.world.size,
+                                         PInText(RankSumP(idafsa.millis, other->millis))));
+      }
+    }
+  }
+  return absl::StrCat(
+      "## Time per run\n\n"
+      "Wall times from a shared, loaded 2-core machine: compare ratios, not absolute values. The "
+      "paper gives times only in plots, and says IDAFSA's operations \"relatively increased\". "
+      "idafsa runs all MAXGEN generations; its mean time per run is ",
+      absl::StrJoin(ratios, ", "), ".\n\n", table.ToString(), "\n");
 }
 
 }  // namespace
@@ -508,6 +595,10 @@ absl::StatusOr<std::string> RunIdafsaGrids(const ExperimentOptions& options) {
           RunFishConfig(row.config, world, r.map, options, runs, generations);
       if (!st.ok()) return st.status();
       r.rows.push_back(*std::move(st));
+      absl::StatusOr<FishRunStats> before = RunFishConfig(WithRandomCloserMoves(row.config), world,
+                                                          r.map, options, runs, generations);
+      if (!before.ok()) return before.status();
+      r.random_closer.push_back(*std::move(before));
     }
     for (const AblationRow& row : ablation) {
       if (options.log)
@@ -525,16 +616,30 @@ absl::StatusOr<std::string> RunIdafsaGrids(const ExperimentOptions& options) {
   const int replicated_runs = options.quick ? kQuickRuns : kReplicatedRuns;
   std::vector<FishConfig> configs;
   for (const TableRow& row : rows) configs.push_back(row.config);
-  std::vector<ReplicatedIdafsaGrid> replicated;
+  std::vector<FishConfig> random_closer_configs;
+  for (const FishConfig& config : configs) {
+    random_closer_configs.push_back(WithRandomCloserMoves(config));
+  }
+  std::vector<ReplicatedIdafsaGrid> replicated, replicated_random_closer;
   for (const IdafsaGridWorld& world : IdafsaGridWorlds()) {
     absl::StatusOr<ReplicatedIdafsaGrid> grid = RunReplicatedIdafsaGrid(
         world, configs, options, replicated_worlds, replicated_runs, generations);
     if (!grid.ok()) return grid.status();
     replicated.push_back(*std::move(grid));
+    absl::StatusOr<ReplicatedIdafsaGrid> before = RunReplicatedIdafsaGrid(
+        world, random_closer_configs, options, replicated_worlds, replicated_runs, generations);
+    if (!before.ok()) return before.status();
+    replicated_random_closer.push_back(*std::move(before));
   }
   std::string replicated_summary;
   const std::string replicated_section = ReplicatedIdafsaSection(
       replicated, configs, kIdafsaRow, replicated_runs, &replicated_summary);
+  std::string moves_summary;
+  const std::string moves_section =
+      MovesVerdictSection(VerdictScopes(results, replicated, rows, /*random_closer=*/false),
+                          VerdictScopes(results, replicated_random_closer, rows,
+                                        /*random_closer=*/true),
+                          &moves_summary);
 
   std::string out = absl::StrCat(
       "# IDAFSA Tables 2-3: the fish swarm family on 10 x 10 and 20 x 20 grids\n\n",
@@ -551,6 +656,9 @@ absl::StatusOr<std::string> RunIdafsaGrids(const ExperimentOptions& options) {
       {"MAXGEN", "100", options.quick ? absl::StrCat(kQuickGenerations, " (quick)") : "100"});
   settings.AddRow({"IDAFSA step_min, step_max, m", "√2, 2√2, 17 (10x10) / 10 (20x20)",
                    "√2, 2√2, 17 (10x10) / 10 (20x20)"});
+  settings.AddRow({"fish moves", "eqs 3-5 (toward X_j by step·rand()); culled factor",
+                   "eqs 3-5 mapped to the nearest valid closer move (our reading); culled prey "
+                   "draws in dafsa and idafsa; random-closer moves as an ablation"});
   settings.AddRow({"runs per planner and grid", "not stated", absl::StrCat(runs)});
   settings.AddRow({"seeds", "not stated",
                    absl::StrCat(options.seed, " … ", options.seed + runs - 1,
@@ -583,7 +691,8 @@ absl::StatusOr<std::string> RunIdafsaGrids(const ExperimentOptions& options) {
   }
   absl::StrAppend(&out, BezierSection(results, rows, bound),
                   AblationSection(results, ablation, generations), replicated_section,
-                  Discussion(results, rows, replicated_summary));
+                  moves_section, Discussion(results, rows, replicated_summary, moves_summary),
+                  TimeSection(results, rows, ablation));
   return out;
 }
 

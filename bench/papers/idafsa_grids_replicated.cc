@@ -173,7 +173,6 @@ std::string GridSummary(const ReplicatedIdafsaGrid& grid, const std::vector<Fish
   const ComparedRuns pooled_ref = PooledRuns(ref_label, grid, reference);
   std::vector<ComparedRuns> pooled_others;
   std::string across_differences, single_worlds;
-  std::vector<ClaimTest> shorter_across, more_success_across;
   for (size_t c = 0; c < configs.size(); ++c) {
     if (c == reference) continue;
     const std::string& label = configs[c].label;
@@ -186,12 +185,10 @@ std::string GridSummary(const ReplicatedIdafsaGrid& grid, const std::vector<Fish
                    ValueDifference(label, "success rate", across.reference_rates,
                                    across.other_rates, across.success_p));
     AppendListItem(&single_worlds, SingleWorldCounts(label, across), "; ");
-    shorter_across.push_back({label, across.length_p,
-                              Median(across.reference_medians).value_or(0.0) <
-                                  Median(across.other_medians).value_or(0.0)});
-    more_success_across.push_back(
-        {label, across.success_p,
-         Mean(across.reference_rates).value_or(0.0) > Mean(across.other_rates).value_or(0.0)});
+  }
+  std::string across_verdict;
+  for (const ClaimTests& claim : AcrossWorldClaims(grid, configs, reference)) {
+    AppendListItem(&across_verdict, ClaimVerdict(claim), " ");
   }
   const int worlds = static_cast<int>(grid.worlds.size());
   return absl::StrFormat(
@@ -201,18 +198,43 @@ std::string GridSummary(const ReplicatedIdafsaGrid& grid, const std::vector<Fish
       "%s.\n"
       "  - Single worlds (%d runs each, p < 0.05 within the world), of %d worlds: %s %s.\n"
       "  - The paper's headline on the pooled runs: %s\n"
-      "  - The paper's headline across worlds: %s %s\n",
+      "  - The paper's headline across worlds: %s\n",
       worlds, grid.size, grid.size, runs, ref_label, ShippedAgainstDrawn(grid, reference),
       ref_label, SupportedDifferences(pooled_ref, pooled_others),
       across_differences.empty() ? "none" : across_differences, runs, worlds, ref_label,
       single_worlds.empty() ? "differs significantly from no configuration in any world"
                             : absl::StrCat("is significantly ", single_worlds),
-      HeadlineVerdict(pooled_ref, pooled_others),
-      ClaimVerdict("Shorter paths", shorter_across, "no world where both succeeded"),
-      ClaimVerdict("Higher success", more_success_across, "no worlds"));
+      HeadlineVerdict(pooled_ref, pooled_others), across_verdict);
 }
 
 }  // namespace
+
+std::vector<ClaimTests> PooledClaims(const ReplicatedIdafsaGrid& grid,
+                                     const std::vector<FishConfig>& configs, size_t reference) {
+  std::vector<ComparedRuns> others;
+  for (size_t c = 0; c < configs.size(); ++c) {
+    if (c != reference) others.push_back(PooledRuns(configs[c].label, grid, c));
+  }
+  return HeadlineClaims(PooledRuns(configs[reference].label, grid, reference), others);
+}
+
+std::vector<ClaimTests> AcrossWorldClaims(const ReplicatedIdafsaGrid& grid,
+                                          const std::vector<FishConfig>& configs,
+                                          size_t reference) {
+  std::vector<ClaimTests> claims = {{"Shorter paths", "no world where both succeeded", {}},
+                                    {"Higher success", "no worlds", {}}};
+  for (size_t c = 0; c < configs.size(); ++c) {
+    if (c == reference) continue;
+    const AcrossWorlds across = CompareAcrossWorlds(grid, reference, c);
+    claims[0].tests.push_back({configs[c].label, across.length_p,
+                               Median(across.reference_medians).value_or(0.0) <
+                                   Median(across.other_medians).value_or(0.0)});
+    claims[1].tests.push_back(
+        {configs[c].label, across.success_p,
+         Mean(across.reference_rates).value_or(0.0) > Mean(across.other_rates).value_or(0.0)});
+  }
+  return claims;
+}
 
 IdafsaGridWorld ReplicatedIdafsaWorld(const IdafsaGridWorld& shipped, int index) {
   IdafsaGridWorld world = shipped;

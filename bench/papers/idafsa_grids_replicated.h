@@ -11,6 +11,7 @@
 #include "absl/status/statusor.h"
 #include "bench/papers/experiment.h"
 #include "bench/papers/idafsa_grids_runs.h"
+#include "bench/papers/idafsa_grids_significance.h"
 #include "bench/papers/idafsa_grids_worlds.h"
 #include "bench/papers/world_replication.h"
 
@@ -40,6 +41,15 @@ absl::StatusOr<ReplicatedIdafsaGrid> RunReplicatedIdafsaGrid(const IdafsaGridWor
                                                              const std::vector<FishConfig>& configs,
                                                              const ExperimentOptions& options,
                                                              int worlds, int runs, int generations);
+
+// The paper's claims for configs[reference] (idafsa) against the other configurations: on the
+// runs pooled over the worlds (shorter paths, fewer turning points, higher success), and paired
+// across worlds by the signed-rank test on the per-world medians and success rates (shorter
+// paths, higher success).
+std::vector<ClaimTests> PooledClaims(const ReplicatedIdafsaGrid& grid,
+                                     const std::vector<FishConfig>& configs, size_t reference);
+std::vector<ClaimTests> AcrossWorldClaims(const ReplicatedIdafsaGrid& grid,
+                                          const std::vector<FishConfig>& configs, size_t reference);
 
 // The report's section: per grid size a per-world table, a pooled table (length over each
 // world's optimum) and the signed-rank test of the per-world medians, each configuration against

@@ -60,17 +60,43 @@ std::string SupportedDifferences(const ComparedRuns& reference,
   return list.empty() ? "none" : list;
 }
 
+ClaimOutcome OutcomeOf(const ClaimTest& test) {
+  if (!test.p.has_value()) return ClaimOutcome::kUntestable;
+  if (*test.p >= kSignificanceLevel) return ClaimOutcome::kNotSignificant;
+  return test.idafsa_better ? ClaimOutcome::kSupported : ClaimOutcome::kReversed;
+}
+
+std::string OutcomeName(ClaimOutcome outcome) {
+  switch (outcome) {
+    case ClaimOutcome::kSupported:
+      return "supported";
+    case ClaimOutcome::kReversed:
+      return "reversed";
+    case ClaimOutcome::kNotSignificant:
+      return "not significant";
+    case ClaimOutcome::kUntestable:
+      return "untestable";
+  }
+  return "untestable";
+}
+
 std::string ClaimVerdict(const std::string& claim, const std::vector<ClaimTest>& tests,
                          const std::string& why_untestable) {
   std::string supported, reversed, not_shown, untestable;
   for (const ClaimTest& test : tests) {
-    if (!test.p.has_value()) {
-      AppendListItem(&untestable, test.baseline);
-    } else if (*test.p >= kSignificanceLevel) {
-      AppendListItem(&not_shown, LabelWithP(test.baseline, *test.p));
-    } else {
-      AppendListItem(test.idafsa_better ? &supported : &reversed,
-                     LabelWithP(test.baseline, *test.p));
+    switch (OutcomeOf(test)) {
+      case ClaimOutcome::kUntestable:
+        AppendListItem(&untestable, test.baseline);
+        break;
+      case ClaimOutcome::kNotSignificant:
+        AppendListItem(&not_shown, LabelWithP(test.baseline, *test.p));
+        break;
+      case ClaimOutcome::kSupported:
+        AppendListItem(&supported, LabelWithP(test.baseline, *test.p));
+        break;
+      case ClaimOutcome::kReversed:
+        AppendListItem(&reversed, LabelWithP(test.baseline, *test.p));
+        break;
     }
   }
   std::string verdict;
@@ -91,21 +117,35 @@ std::string ClaimVerdict(const std::string& claim, const std::vector<ClaimTest>&
   return absl::StrCat(claim, ": ", verdict.empty() ? "no baseline" : verdict, ".");
 }
 
-std::string HeadlineVerdict(const ComparedRuns& idafsa,
-                            const std::vector<ComparedRuns>& baselines) {
-  std::vector<ClaimTest> shorter, fewer_turns, more_successes;
+std::string ClaimVerdict(const ClaimTests& claim) {
+  return ClaimVerdict(claim.claim, claim.tests, claim.why_untestable);
+}
+
+std::vector<ClaimTests> HeadlineClaims(const ComparedRuns& idafsa,
+                                       const std::vector<ComparedRuns>& baselines) {
+  const std::string no_path = "a side without successful runs";
+  std::vector<ClaimTests> claims = {{"Shorter paths", no_path, {}},
+                                    {"Fewer turning points", no_path, {}},
+                                    {"Higher success", "no runs", {}}};
   for (const ComparedRuns& other : baselines) {
     const ComparisonTests tests = TestAgainst(idafsa, other);
-    shorter.push_back({other.label, tests.length_p, LowerMedian(idafsa.lengths, other.lengths)});
-    fewer_turns.push_back(
+    claims[0].tests.push_back(
+        {other.label, tests.length_p, LowerMedian(idafsa.lengths, other.lengths)});
+    claims[1].tests.push_back(
         {other.label, tests.turning_p, LowerMedian(idafsa.turning_points, other.turning_points)});
-    more_successes.push_back(
+    claims[2].tests.push_back(
         {other.label, tests.success_p, idafsa.success.rate() > other.success.rate()});
   }
-  const std::string no_path = "a side without successful runs";
-  return absl::StrCat(ClaimVerdict("Shorter paths", shorter, no_path), " ",
-                      ClaimVerdict("Fewer turning points", fewer_turns, no_path), " ",
-                      ClaimVerdict("Higher success", more_successes, "no runs"));
+  return claims;
+}
+
+std::string HeadlineVerdict(const ComparedRuns& idafsa,
+                            const std::vector<ComparedRuns>& baselines) {
+  std::string verdict;
+  for (const ClaimTests& claim : HeadlineClaims(idafsa, baselines)) {
+    AppendListItem(&verdict, ClaimVerdict(claim), " ");
+  }
+  return verdict;
 }
 
 }  // namespace swarmplan::bench

@@ -52,6 +52,25 @@ struct ClaimTest {
 std::string ClaimVerdict(const std::string& claim, const std::vector<ClaimTest>& tests,
                          const std::string& why_untestable);
 
+// What the tests say about one claim against one baseline.
+enum class ClaimOutcome { kSupported, kReversed, kNotSignificant, kUntestable };
+ClaimOutcome OutcomeOf(const ClaimTest& test);
+// "supported", "reversed", "not significant" or "untestable".
+std::string OutcomeName(ClaimOutcome outcome);
+
+// One of the paper's claims for idafsa tested against every baseline.
+struct ClaimTests {
+  std::string claim;           // e.g. "Shorter paths"
+  std::string why_untestable;  // when a test has no p
+  std::vector<ClaimTest> tests;
+};
+std::string ClaimVerdict(const ClaimTests& claim);
+
+// The paper's claims for idafsa (shorter paths, fewer turning points, higher success) tested
+// against each of `baselines`.
+std::vector<ClaimTests> HeadlineClaims(const ComparedRuns& idafsa,
+                                       const std::vector<ComparedRuns>& baselines);
+
 // Which of the paper's claims for idafsa (shorter paths, fewer turning points, higher success)
 // the tests support against each of `baselines`: per claim the configurations where idafsa is
 // significantly better, where it is significantly worse, and where the runs do not tell.

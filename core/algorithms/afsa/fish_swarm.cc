@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/algorithms/afsa/fish_moves.h"
 #include "core/algorithms/citations.h"
 #include "core/graph/grid_search.h"
 #include "core/grid_ops/cell_path.h"
@@ -18,8 +19,6 @@ struct Fish {
   Cell pos;
   std::vector<Cell> trail;
 };
-
-double Dist(Cell a, Cell b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // The paper's larger grid side, in cells: with init=seeded, visual and steps scale with the
 // grid's longer side over it.
@@ -36,7 +35,7 @@ class FishSwarmSearch {
     const OccupancyGrid& g = *space.grid;
     // Any loop-free path is shorter than this: unreached fish rank behind every arrival.
     unreached_offset_ = static_cast<double>(g.width()) * g.height() * g.resolution() * 3.0;
-    dist_min_ = std::max(Dist(space.start, space.goal), 1e-9);
+    dist_min_ = std::max(FishDistance(space.start, space.goal), 1e-9);
     if (p.seeding.seeded) scale_ = std::max(1.0, std::max(g.width(), g.height()) / kPaperGridSide);
   }
 
@@ -104,7 +103,7 @@ class FishSwarmSearch {
   // cells away; nullopt when that segment is not collision-free or the fish would not move.
   std::optional<Cell> LineOfSightStep(Cell from, Cell target, double step) const {
     Cell aim = target;
-    const double d = Dist(from, target);
+    const double d = FishDistance(from, target);
     if (d > step) {
       const double t = step / d;
       aim = Cell{from.x + static_cast<int>(std::lround((target.x - from.x) * t)),
@@ -117,7 +116,7 @@ class FishSwarmSearch {
 
   double Food(Cell c) {
     ++evaluations_;
-    return Dist(c, space_.goal);
+    return FishDistance(c, space_.goal);
   }
   double Unreached(Cell c) { return unreached_offset_ + Food(c) * space_.grid->resolution(); }
 
@@ -146,7 +145,7 @@ class FishSwarmSearch {
 
     std::vector<Cell> allowed;
     for (const Cell& to : moves_.ValidMoves(fish.pos)) {
-      if (Dist(fish.pos, to) <= step + 1e-9) allowed.push_back(to);
+      if (FishDistance(fish.pos, to) <= step + 1e-9) allowed.push_back(to);
     }
     if (!allowed.empty()) {
       std::optional<Cell> target = SocialTarget(i, y, visual);
@@ -156,11 +155,14 @@ class FishSwarmSearch {
       if (target && seeds_) straight = LineOfSightStep(fish.pos, *target, std::min(step, visual));
       if (straight) {
         to = *straight;
+      } else if (target && p_.move == FishSwarmParams::Move::kDirection) {
+        const double length = std::min(step, LongestMove()) * rng_.Uniform();
+        if (std::optional<Cell> c = DirectionMove(fish.pos, *target, length, allowed)) to = *c;
       } else if (target) {
-        const double now = Dist(fish.pos, *target);
+        const double now = FishDistance(fish.pos, *target);
         std::vector<Cell> closer;
         for (const Cell& c : allowed) {
-          if (Dist(c, *target) < now - 1e-12) closer.push_back(c);
+          if (FishDistance(c, *target) < now - 1e-12) closer.push_back(c);
         }
         if (!closer.empty()) to = closer[rng_.UniformInt(0, closer.size() - 1)];
       }
@@ -216,7 +218,7 @@ class FishSwarmSearch {
     std::optional<Cell> best;
     double best_y = y;
     for (size_t j = 0; j < fish_.size(); ++j) {
-      if (j == i || Dist(me, fish_[j].pos) > visual) continue;
+      if (j == i || FishDistance(me, fish_[j].pos) > visual) continue;
       ++count;
       cx += fish_[j].pos.x;
       cy += fish_[j].pos.y;
@@ -238,15 +240,23 @@ class FishSwarmSearch {
 
   // Prey: the first of try_number random usable cells in view that is closer to the goal.
   std::optional<Cell> PreyTarget(Cell me, double y, double visual) {
-    const int reach = static_cast<int>(std::floor(visual));
-    if (reach < 1) return std::nullopt;
-    for (int t = 0; t < p_.try_number; ++t) {
-      const Cell c{me.x + static_cast<int>(rng_.UniformInt(-reach, reach)),
-                   me.y + static_cast<int>(rng_.UniformInt(-reach, reach))};
-      if (Dist(me, c) > visual || !moves_.Usable(c)) continue;
-      if (Food(c) < y) return c;
+    const PreySearch search{p_.try_number, visual, p_.prey_culling};
+    return swarmplan::PreyTarget(
+        me, y, search, [this](Cell c) { return moves_.Usable(c); },
+        [this](Cell c) { return Food(c); }, rng_);
+  }
+
+  // The step of eqs 3-5 without eqs 10-11: the neighbourhood's longest move.
+  double LongestMove() const {
+    switch (p_.neighbourhood) {
+      case Neighbourhood::k4:
+        return 1.0;
+      case Neighbourhood::k8:
+        return std::sqrt(2.0);
+      case Neighbourhood::k24:
+        return 2.0 * std::sqrt(2.0);
     }
-    return std::nullopt;
+    return 1.0;
   }
 
   const FishSwarmParams& p_;
@@ -312,6 +322,7 @@ FishSwarmParams FishSwarmParams::Defaults(Variant variant) {
   if (variant == Variant::kIdafsa) {
     p.feasible_solutions = p.dynamic_visual = p.adaptive_step = true;
   }
+  p.prey_culling = variant != Variant::kAfsa;
   return p;
 }
 
@@ -327,6 +338,16 @@ std::vector<ParamSpec> FishSwarmParams::Specs(Variant variant) {
                       "shortest record"),
       ParamSpec::Bool("dynamic_visual", d.dynamic_visual, "feedback visual of eq 9"),
       ParamSpec::Bool("adaptive_step", d.adaptive_step, "adaptive step of eqs 10-11"),
+      ParamSpec::Enum("move", d.move == Move::kDirection ? "direction" : "random-closer",
+                      {"direction", "random-closer"},
+                      "how a fish steps toward its target: direction = eqs 3-5, the valid move "
+                      "closer to the target that is nearest to X + rand()·step·(X_j − X)/"
+                      "||X_j − X|| (our reading of the equations on a grid); random-closer = a "
+                      "random valid move closer to the target (before issue 15)"),
+      ParamSpec::Bool("prey_culling", d.prey_culling,
+                      "the culled factor: prey search draws each cell in view at most once and "
+                      "unusable or out-of-view cells do not use one of the try_number tries "
+                      "(paper: with the Dijkstra check, so on for dafsa and idafsa)"),
       ParamSpec::Int("population", d.population, 1, 100000, "fish", "N").PopulationSize(),
       ParamSpec::Int("try_number", d.try_number, 1, 10000, "tries", "prey attempts"),
       ParamSpec::Int("max_generations", d.max_generations, 1, 1000000, "iterations", "MAXGEN"),
@@ -354,6 +375,8 @@ FishSwarmParams FishSwarmParams::From(const ParamSet& set) {
   p.feasible_solutions = set.Bool("feasible_solutions");
   p.dynamic_visual = set.Bool("dynamic_visual");
   p.adaptive_step = set.Bool("adaptive_step");
+  p.move = set.Enum("move") == "random-closer" ? Move::kRandomCloser : Move::kDirection;
+  p.prey_culling = set.Bool("prey_culling");
   p.population = static_cast<int>(set.Int("population"));
   p.try_number = static_cast<int>(set.Int("try_number"));
   p.max_generations = static_cast<int>(set.Int("max_generations"));

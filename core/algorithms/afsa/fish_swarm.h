@@ -22,9 +22,11 @@ namespace swarmplan {
 //           start again; the answer is the shortest record), dynamic feedback visual (eq 9) and
 //           adaptive step (eqs 10-11).
 // Food concentration is the Euclidean distance to the goal. Behaviours: follow and swarm when a
-// better, uncrowded (n_f/N <= δ) place is in view, else prey (try_number random cells in view),
-// else a random move; stepping toward a target picks a random valid move that gets closer to
-// it. Valid moves per cell are computed once and shared by all fish.
+// better, uncrowded (n_f/N <= δ) place is in view, else prey (try_number random cells in view,
+// with the paper's culled factor: a tried or unusable cell is not drawn again), else a random
+// move. Stepping toward a target (move=direction, eqs 3-5): among the valid moves that get closer
+// to it, the one nearest to X + rand()·step·(X_j − X)/||X_j − X||; move=random-closer: a random
+// one of them. Valid moves per cell are computed once and shared by all fish.
 // init=seeded: fish start spread along the seeds' cell paths, their trails the seed up to there
 // (every variant records each arrival and restarts the fish the same way, as idafsa's
 // feasible-solution set does: a fish that starts on a seed first arrives along the seed's own
@@ -33,11 +35,16 @@ namespace swarmplan {
 // is in line of sight (clipped to its step) swims straight to it; trails are ranked by their
 // any-angle length, and the result is never longer than the best seed.
 struct FishSwarmParams {
+  // How a fish steps toward its target: along eqs 3-5's direction, or to any closer cell.
+  enum class Move { kDirection, kRandomCloser };
+
   Neighbourhood neighbourhood = Neighbourhood::k8;
   bool segment_check = false;
   bool feasible_solutions = false;
   bool dynamic_visual = false;
   bool adaptive_step = false;
+  Move move = Move::kDirection;
+  bool prey_culling = false;
   int population = 50;  // N
   int try_number = 8;
   int max_generations = 100;             // MAXGEN
