@@ -1,5 +1,6 @@
 // AS-BFO paper (Long et al.): Table 4 (AS-BFO vs ACO vs GA on two island environments at five
-// sizes) and the parameter sweeps of its section 4.1 (P, Nc, Nre, Ned on S3).
+// sizes), the parameter sweeps of its section 4.1 (P, Nc, Nre, Ned on S3) and its Morris analysis
+// (section 4.2).
 
 #include <algorithm>
 #include <fstream>
@@ -16,11 +17,13 @@
 #include "absl/strings/str_join.h"
 #include "absl/time/time.h"
 #include "bench/papers/as_bfo_islands_discussion.h"
+#include "bench/papers/as_bfo_islands_morris.h"
 #include "bench/papers/as_bfo_islands_replicated.h"
 #include "bench/papers/as_bfo_islands_report.h"
 #include "bench/papers/as_bfo_islands_runs.h"
 #include "bench/papers/as_bfo_islands_significance.h"
 #include "bench/papers/as_bfo_islands_sweep_tests.h"
+#include "bench/papers/as_bfo_islands_times.h"
 #include "bench/papers/as_bfo_islands_world.h"
 #include "bench/papers/experiments.h"
 #include "bench/papers/markdown_table.h"
@@ -33,20 +36,18 @@ namespace swarmplan::bench {
 namespace as_bfo_islands {
 
 // Every method runs with the paper's initialisation (init=paper): the reproduction measures the
-// paper's method, not the seeded one.
+// paper's method, not the seeded one. AS-BFO and GA start from wandering initial paths (through up
+// to kWanderingVia random cells), the near-A* rows (1 to kDefaultVia cells) are the ablation.
 const std::vector<Method>& Methods() {
   static const std::vector<Method>* const methods = new std::vector<Method>{
-      {"AS-BFO", "as-bfo", {{"init", std::string("paper")}}, 0},
-      {"ACO", "aco-grid", {{"init", std::string("paper")}}, 1},
-      {"GA", "ga", {{"init", std::string("paper")}}, 2},
-      {absl::StrCat("AS-BFO ≤", kWanderingVia, " via"),
+      {"AS-BFO",
        "as-bfo",
        {{"init", std::string("paper")}, {"max_waypoints", int64_t{kWanderingVia}}},
-       -1},
-      {absl::StrCat("GA ≤", kWanderingVia, " via"),
-       "ga",
-       {{"init", std::string("paper")}, {"max_waypoints", int64_t{kWanderingVia}}},
-       -1},
+       0},
+      {"ACO", "aco-grid", {{"init", std::string("paper")}}, 1},
+      {"GA", "ga", {{"init", std::string("paper")}, {"max_waypoints", int64_t{kWanderingVia}}}, 2},
+      {"AS-BFO near-A*", "as-bfo", {{"init", std::string("paper")}}, -1},
+      {"GA near-A*", "ga", {{"init", std::string("paper")}}, -1},
   };
   return *methods;
 }
@@ -62,17 +63,23 @@ const std::vector<Sweep>& Sweeps() {
        "Nc",
        {1, 2, 3, 4, 5, 6, 7, 8},
        "shortest at Nc = 7, fewest at Nc = 8",
-       "shortest at Nc = 8, fewest at Nc = 6"},
+       "shortest at Nc = 8, fewest at Nc = 6",
+       8,
+       6},
       {"reproduction_steps",
        "Nre",
        {1, 2, 3, 4, 5},
        "shortest at Nre = 5, fewest at Nre = 4",
-       "shortest at Nre = 2, fewest at Nre = 5"},
+       "shortest at Nre = 2, fewest at Nre = 5",
+       2,
+       5},
       {"elimination_steps",
        "Ned",
        {1, 2, 3, 4, 5},
        "shortest at Ned = 3, fewest at Ned = 5",
-       "shortest at Ned = 4, fewest at Ned = 4"},
+       "shortest at Ned = 4, fewest at Ned = 4",
+       4,
+       4},
   };
   return *sweeps;
 }
@@ -175,6 +182,22 @@ absl::StatusOr<std::string> Run(const ExperimentOptions& options) {
     }
   }
 
+  // Section 4.2: the Morris analysis on S3 of each environment (the smallest size in quick mode).
+  std::vector<MorrisAnalysis> morris;
+  for (const std::vector<World>& environment : worlds) {
+    const World* world = &environment.front();
+    for (const World& w : environment) {
+      if (w.n == kSweepSize) world = &w;
+    }
+    absl::StatusOr<MorrisAnalysis> analysis = RunMorris(
+        *world, options.quick ? kQuickMorrisTrajectories : kMorrisTrajectories,
+        options.quick ? kQuickRuns : kMorrisRuns, max_iterations, options.seed, options.jobs);
+    if (!analysis.ok()) return analysis.status();
+    Log(options,
+        absl::StrFormat("Morris on %s %dx%d: done", world->environment, world->n, world->n));
+    morris.push_back(*std::move(analysis));
+  }
+
   // Table 4's methods of the paper on drawn worlds, AS-BFO first.
   const int replicated_worlds = options.quick ? kQuickReplicatedWorlds : kReplicatedWorlds;
   const int replicated_runs = options.quick      ? kQuickRuns
@@ -189,12 +212,14 @@ absl::StatusOr<std::string> Run(const ExperimentOptions& options) {
   const std::vector<ReplicatedIslandCell> replicated = *std::move(replicated_runs_or);
   std::string replicated_differences;
 
-  std::string report = "# AS-BFO: Table 4 and the parameter sweeps of section 4.1\n\n";
+  std::string report =
+      "# AS-BFO: Table 4, the sweeps of section 4.1 and the Morris analysis of section 4.2\n\n";
   absl::StrAppend(&report,
                   "Reproduces Long et al., *A*-based bacterial foraging optimisation for global "
                   "path planning of USVs* (seed 001): Table 4 (AS-BFO vs ACO vs GA on two island "
-                  "environments at five grid sizes, 20 runs each) and the sweeps of P, Nc, Nre "
-                  "and Ned of its section 4.1, with `as-bfo`, `aco-grid`, `ga` and A* (`astar`) "
+                  "environments at five grid sizes, 20 runs each), the sweeps of P, Nc, Nre "
+                  "and Ned of its section 4.1 and its Morris analysis (section 4.2), with "
+                  "`as-bfo`, `aco-grid`, `ga` and A* (`astar`) "
                   "for the optimum. Every found path is checked: it runs from start to goal in "
                   "8-connected moves without corner cutting, is collision-free and is not "
                   "shorter than A*'s optimum.\n\n");
@@ -208,12 +233,12 @@ absl::StatusOr<std::string> Run(const ExperimentOptions& options) {
   absl::StrAppend(&report, SweepSection(*sweep_world, sweep_rows, sweep_runs));
   const std::vector<SweepEnds> sweep_ends = SweepEndsOf(sweep_rows, sweep_world->optimum);
   absl::StrAppend(&report, SweepTestsSection(sweep_ends, sweep_world->optimum));
-  absl::StrAppend(&report, Discussion({worlds, outcomes, *sweep_world, sweep_rows, sweep_ends,
-                                       replicated_worlds, replicated_runs, replicated_differences,
-                                       options.quick}));
   absl::StrAppend(&report,
-                  "Times are wall-clock times from a shared, loaded 2-core machine: compare "
-                  "ratios between planners, not absolute values.\n");
+                  MorrisSection(morris, options.quick ? kQuickRuns : kMorrisRuns, options.seed));
+  absl::StrAppend(&report, Discussion({worlds, outcomes, *sweep_world, sweep_rows, sweep_ends,
+                                       morris, replicated_worlds, replicated_runs,
+                                       replicated_differences, options.quick}));
+  absl::StrAppend(&report, RunTimesSection(worlds, outcomes, sweep_rows));
   return report;
 }
 

@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "bench/papers/as_bfo_islands_morris.h"
 #include "bench/papers/as_bfo_islands_paper.h"
 #include "bench/papers/as_bfo_islands_runs.h"
 #include "bench/papers/as_bfo_islands_significance.h"
@@ -48,10 +49,11 @@ std::string PText(std::optional<double> p) {
   return p ? FormatPValue(*p, /*mark_significant=*/false) : "no test";
 }
 
-// The first index of a method among Methods() with this algorithm and initial paths.
-size_t MethodIndex(const std::string& algorithm, bool wandering) {
+// The first index of a method among Methods() with this algorithm, in the paper's rows or in
+// the ablation (near-A* initial paths).
+size_t MethodIndex(const std::string& algorithm, bool ablation) {
   for (size_t m = 0; m < Methods().size(); ++m) {
-    if (Methods()[m].algorithm == algorithm && (Methods()[m].paper_row < 0) == wandering) return m;
+    if (Methods()[m].algorithm == algorithm && (Methods()[m].paper_row < 0) == ablation) return m;
   }
   return 0;
 }
@@ -139,7 +141,7 @@ std::vector<double> PerCell(
 std::optional<double> MeanAin(const Outcome& o, const World&) { return Mean(o.ains); }
 
 std::string IterationsParagraph(const DiscussionInputs& in) {
-  const size_t wandering = MethodIndex("as-bfo", true);
+  const size_t ablation = MethodIndex("as-bfo", true);
   std::vector<double> paper_ain;
   for (size_t e = 0; e < in.worlds.size(); ++e) {
     for (const World& w : in.worlds[e]) paper_ain.push_back(paper::kAin[e][0][PaperSize(w.n)]);
@@ -154,13 +156,16 @@ std::string IterationsParagraph(const DiscussionInputs& in) {
     }
   }
   std::string text = absl::StrCat(
-      "**AS-BFO's iterations.** AS-BFO finds its final path almost at once: its AIN in Table 4 is ",
-      Range(PerCell(in, kReferenceMethod, MeanAin)), " with our default initial paths and ",
-      Range(PerCell(in, wandering, MeanAin)), " with wandering ones, the paper's ",
-      Range(paper_ain), ". Over the sweeps' values it is ", Range(sweep_default),
-      " with default and ", Range(sweep_wandering), " with wandering initial paths");
+      "**AS-BFO's iterations.** Its AIN in Table 4 is ",
+      Range(PerCell(in, kReferenceMethod, MeanAin)),
+      " with the wandering initial paths of the main rows, the paper's ", Range(paper_ain),
+      "; with near-A* initial paths (the ablation) it is ", Range(PerCell(in, ablation, MeanAin)),
+      ", since one of those is often the optimum already. Over the sweeps' values it is ",
+      Range(sweep_wandering), " with wandering and ", Range(sweep_default),
+      " with near-A* initial paths");
   if (highest != nullptr) {
-    absl::StrAppend(&text, ", highest at ", highest->sweep->symbol, " = ", highest->value);
+    absl::StrAppend(&text, " (wandering: highest at ", highest->sweep->symbol, " = ",
+                    highest->value, ")");
   }
   absl::StrAppend(&text, ".\n\n");
   return text;
@@ -242,52 +247,6 @@ std::string AcoParagraph(const DiscussionInputs& in) {
   return text;
 }
 
-std::string TimeParagraph(const DiscussionInputs& in) {
-  const std::string& ref = Methods()[kReferenceMethod].label;
-  std::string text = "**Run times.** ";
-  const int cells = CellCount(in);
-  for (size_t m : TestedMethods()) {
-    const std::vector<double> ratios = PerCell(in, m, [&](const Outcome& o, const World& w) {
-      for (size_t e = 0; e < in.worlds.size(); ++e) {
-        for (size_t s = 0; s < in.worlds[e].size(); ++s) {
-          if (&in.worlds[e][s] != &w) continue;
-          const auto base = Mean(in.outcomes[e][kReferenceMethod][s].millis);
-          const auto theirs = Mean(o.millis);
-          if (base && theirs && *base > 0.0) return std::optional<double>(*theirs / *base);
-        }
-      }
-      return std::optional<double>();
-    });
-    const MethodFindings f = FindingsOf(in, m);
-    absl::StrAppend(&text, Methods()[m].label, "'s mean run time is ", Range(ratios, 3, "×"), " ",
-                    ref, "'s (slower in ", f.slower.count, "/", cells, " cells and faster in ",
-                    f.faster.count, " by the rank-sum test on the run times). ");
-  }
-  // The slowest of the paper's methods per cell, by mean run time.
-  std::vector<int> slowest_in(Methods().size(), 0);
-  for (size_t e = 0; e < in.worlds.size(); ++e) {
-    for (size_t s = 0; s < in.worlds[e].size(); ++s) {
-      size_t slowest = kReferenceMethod;
-      for (size_t m : TestedMethods()) {
-        if (Mean(in.outcomes[e][m][s].millis).value_or(0.0) >
-            Mean(in.outcomes[e][slowest][s].millis).value_or(0.0)) {
-          slowest = m;
-        }
-      }
-      ++slowest_in[slowest];
-    }
-  }
-  std::string slowest;
-  for (size_t m = 0; m < Methods().size(); ++m) {
-    if (slowest_in[m] > 0) {
-      AppendListItem(&slowest, absl::StrCat(Methods()[m].label, " in ", slowest_in[m], "/", cells));
-    }
-  }
-  absl::StrAppend(&text, "The slowest of the three by mean run time: ", slowest, ".");
-  absl::StrAppend(&text, "\n\n");
-  return text;
-}
-
 std::string GaParagraph(const DiscussionInputs& in) {
   const size_t ga = MethodIndex("ga", false);
   const std::string& ref = Methods()[kReferenceMethod].label;
@@ -324,9 +283,9 @@ std::string GaParagraph(const DiscussionInputs& in) {
     if (list->count > 0)
       AppendListItem(&differences, absl::StrCat(what, " in ", list->cells), "; ");
   }
-  // The rows with wandering initial paths.
+  // The ablation rows: near-A* initial paths.
   std::vector<double> excess, first_counts;
-  int wandering_runs = 0;
+  int ablation_runs = 0;
   for (size_t m = 0; m < Methods().size(); ++m) {
     if (Methods()[m].paper_row >= 0) continue;
     for (size_t e = 0; e < in.worlds.size(); ++e) {
@@ -334,29 +293,34 @@ std::string GaParagraph(const DiscussionInputs& in) {
         const Outcome& o = in.outcomes[e][m][s];
         if (auto apl = Mean(o.lengths)) excess.push_back(*apl / in.worlds[e][s].optimum - 1.0);
         first_counts.push_back(std::count(o.ains.begin(), o.ains.end(), 1.0));
-        wandering_runs = o.runs;
+        ablation_runs = o.runs;
       }
     }
   }
+  std::vector<double> ga_excess = PerCell(in, ga, [](const Outcome& o, const World& w) {
+    const std::optional<double> apl = Mean(o.lengths);
+    return apl ? std::optional<double>(*apl / w.optimum - 1.0) : std::nullopt;
+  });
   std::string text = absl::StrCat(
       "**Where we do not agree.** (1) The paper's ", label, " is clearly worse than ", ref,
-      " (APL up to ", Percent(paper_excess), " above the best, AIN ", Range(paper_ain), "). Ours ",
-      "reaches A*'s optimum in ", optimal, " of ", runs, " runs and has its final best in ",
-      "iteration 1 in ", first, " of ", found, "; against ", ref, " the tests find ",
+      " (APL up to ", Percent(paper_excess), " above the best, AIN ", Range(paper_ain), "). Ours, ",
+      "from the same wandering initial paths as ", ref, ", reaches A*'s optimum in ", optimal,
+      " of ", runs, " runs (APL at most ", Percent(Max(ga_excess).value_or(0.0)),
+      " above it) and has its final best in iteration 1 in ", first, " of ", found, "; against ",
+      ref, " the tests find ",
       differences.empty() ? absl::StrCat("no difference in any of the ", CellCount(in), " cells")
                           : differences,
-      ". The reason is the initialisation we share between `as-bfo` and `ga` (ALGORITHMS.md): "
-      "each initial path runs through 1–",
-      kDefaultVia,
-      " random cells joined by A*, so every leg is already optimal, and on grids this small one "
-      "of the initial paths is often the optimum. The paper only says its initial paths are "
-      "\"randomly generated without infeasible paths\"; if they were random walks, its "
-      "operators had far more to repair, which is where its differences come from. Even with up "
-      "to ",
-      kWanderingVia, " random cells per initial path (the ≤", kWanderingVia,
-      " via rows), A*-joined legs plus loop removal keep the APL within ",
-      Percent(Max(excess).value_or(0.0)), " of the optimum, and the final best is found in the ",
-      "first iteration in ", CountRange(first_counts), " of ", wandering_runs, " runs per cell.");
+      ". Our initial paths, shared by `as-bfo` and `ga`, run through random cells joined by A*: "
+      "however many cells they pass (up to ",
+      kWanderingVia,
+      " here), every leg between two of them is optimal and loop removal cuts the detours, so "
+      "the operators start close to the optimum. The paper only says its initial paths are "
+      "\"randomly generated without infeasible paths\"; if they were random walks, its operators "
+      "had far more to repair, which is where its differences come from. With near-A* initial "
+      "paths (1–",
+      kDefaultVia, " cells, the ablation rows) the search has even less to do: APL within ",
+      Percent(Max(excess).value_or(0.0)), " of the optimum, final best in the first iteration in ",
+      CountRange(first_counts), " of ", ablation_runs, " runs per cell.");
   return text;
 }
 
@@ -447,7 +411,7 @@ std::string PaperClaimsParagraph(const DiscussionInputs& in) {
       "**The paper's Table 4 claims, tested** (", cells,
       " cells; a cell counts when p < 0.05):\n\n- \"the AS-BFO has a better average path length "
       "using a very small iteration number\": ");
-  std::string lengths, iterations, max_lengths, gaps;
+  std::string lengths, iterations, max_lengths, min_lengths, gaps;
   for (size_t m : TestedMethods()) {
     const std::string& label = Methods()[m].label;
     const MethodFindings f = FindingsOf(in, m);
@@ -456,15 +420,32 @@ std::string PaperClaimsParagraph(const DiscussionInputs& in) {
     AppendListItem(&iterations,
                    absl::StrCat("AIN lower than ", label, "'s in ", f.more_iterations.count,
                                 ", higher in ", f.fewer_iterations.count));
-    int below = 0;
-    for (size_t e = 0; e < in.worlds.size(); ++e) {
-      for (size_t s = 0; s < in.worlds[e].size(); ++s) {
-        const auto a = Max(in.outcomes[e][kReferenceMethod][s].lengths);
-        const auto b = Max(in.outcomes[e][m][s].lengths);
-        if (a && b && *a < *b - 1e-9) ++below;
+    // The single best and worst runs, by the permutation test of the minima and maxima.
+    for (const bool maximum : {true, false}) {
+      int below = 0, below_significant = 0, above_significant = 0;
+      for (size_t e = 0; e < in.worlds.size(); ++e) {
+        for (size_t s = 0; s < in.worlds[e].size(); ++s) {
+          const Outcome& base = in.outcomes[e][kReferenceMethod][s];
+          const Outcome& other = in.outcomes[e][m][s];
+          const auto a = maximum ? Max(base.lengths) : Min(base.lengths);
+          const auto b = maximum ? Max(other.lengths) : Min(other.lengths);
+          if (!a || !b) continue;
+          const MethodTests t = TestAgainst(base, other, in.worlds[e][s].optimum);
+          const bool significant = Significant(maximum ? t.max_p : t.min_p);
+          if (*a < *b - 1e-9) {
+            ++below;
+            below_significant += significant ? 1 : 0;
+          } else if (*a > *b + 1e-9) {
+            above_significant += significant ? 1 : 0;
+          }
+        }
       }
+      AppendListItem(
+          maximum ? &max_lengths : &min_lengths,
+          absl::StrCat("below ", label, "'s in ", below, "/", cells, " cells, significantly in ",
+                       below_significant, " (significantly above in ", above_significant, ")"),
+          "; ");
     }
-    AppendListItem(&max_lengths, absl::StrCat("below ", label, "'s in ", below, "/", cells));
     for (size_t e = 0; e < in.worlds.size(); ++e) {
       std::vector<int> sizes;
       std::vector<double> gap;
@@ -484,12 +465,30 @@ std::string PaperClaimsParagraph(const DiscussionInputs& in) {
       &text, lengths, "; ", iterations, ".\n",
       "- \"the maximum path length obtained by AS-BFO is less than ACO and GA\": our MaxPL is ",
       max_lengths,
-      " cells (a single extreme run, so no test: the rank-sum test on all lengths above is the "
-      "tested form).\n",
+      ". Each MaxPL is a single run, so it is tested by the permutation test of the maxima "
+      "(section \"Table 4: tests against ",
+      ref, "\").\n",
+      "- its best runs (\"AS-BFO's MinPL is … smaller than ACO and … GA\", S4 and S5): our MinPL "
+      "is ",
+      min_lengths, ", by the permutation test of the minima.\n",
       "- \"the larger the map size L, the greater the advantage of AS-BFO\": the APL gap to ", ref,
       " over A*'s optimum from the smallest size to the largest is ", gaps,
       "; the cells where the tests find a difference are listed above.\n\n");
   return text;
+}
+
+// The paper's best single values of the sweeps, tested against the other values.
+std::string BestValuesText(const std::vector<SweepRow>& rows) {
+  const std::string verdicts = PaperBestValueVerdicts(rows);
+  if (verdicts.empty()) {
+    return "Its best single values (the table above) cannot be tested here: one value per "
+           "parameter.\n\n";
+  }
+  return absl::StrCat(
+      "Its best single values (the table above) differ between its two environments; each value "
+      "it names for environment 2 (our sweep world's) against every other value of its sweep, "
+      "with wandering initial paths:\n\n",
+      verdicts, "\n");
 }
 
 std::string SweepParagraph(const DiscussionInputs& in) {
@@ -508,7 +507,7 @@ std::string SweepParagraph(const DiscussionInputs& in) {
                                ? "nothing to test (one value per parameter)"
                                : "no difference between any parameter's smallest and largest value";
   return absl::StrCat(
-      "**Sweeps.** With our default initial paths every value reaches the optimum in ",
+      "**Sweeps.** With near-A* initial paths every value reaches the optimum in ",
       CountRange(optimal_default), " of ", runs, " runs, with AIN ", Range(ain_default),
       "; the tests find ", default_differences.empty() ? none : default_differences,
       ". With wandering initial paths: the optimum in ", CountRange(optimal_wandering), " of ",
@@ -516,9 +515,7 @@ std::string SweepParagraph(const DiscussionInputs& in) {
       wandering_differences.empty() ? none : wandering_differences,
       ". Nc, Nre and Ned also set the iteration budget Nc·Nre·Ned. The paper's statements on the "
       "parameters, against the tests of the smallest and largest value:\n\n",
-      SweepClaimVerdicts(in.sweep_ends),
-      "\nIts best single values (the table above) differ between its two environments and are "
-      "not tested here: only each parameter's smallest and largest value are.\n\n");
+      SweepClaimVerdicts(in.sweep_ends), "\n", BestValuesText(in.sweep_rows));
 }
 
 }  // namespace
@@ -530,9 +527,10 @@ std::string Discussion(const DiscussionInputs& in) {
                     "*Computed from the quick run's few runs: its figures say nothing about the "
                     "planners.*\n\n");
   }
-  absl::StrAppend(&text, IterationsParagraph(in), AcoParagraph(in), TimeParagraph(in),
-                  GaParagraph(in), LargeMapsAndLengthsParagraph(in), PaperTableParagraph(),
-                  PaperClaimsParagraph(in), SweepParagraph(in));
+  absl::StrAppend(&text, IterationsParagraph(in), AcoParagraph(in), GaParagraph(in),
+                  LargeMapsAndLengthsParagraph(in), PaperTableParagraph(), PaperClaimsParagraph(in),
+                  SweepParagraph(in));
+  absl::StrAppend(&text, MorrisParagraph(in.morris));
   absl::StrAppend(&text, "**On ", in.replicated_worlds, " drawn worlds per environment** (",
                   in.replicated_runs, " runs per method and world, section \"Table 4 on ",
                   in.replicated_worlds, " worlds per environment\"): the differences from ",

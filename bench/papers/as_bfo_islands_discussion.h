@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/papers/as_bfo_islands_morris.h"
 #include "bench/papers/as_bfo_islands_report.h"
 #include "bench/papers/as_bfo_islands_sweep_tests.h"
 
@@ -17,6 +18,7 @@ struct DiscussionInputs {
   const World& sweep_world;
   const std::vector<SweepRow>& sweep_rows;
   const std::vector<SweepEnds>& sweep_ends;
+  const std::vector<MorrisAnalysis>& morris;
   int replicated_worlds = 0;
   int replicated_runs = 0;
   std::string replicated_differences;  // from ReplicatedIslandsSection

@@ -40,8 +40,8 @@ struct Outcome {
   double success() const { return runs == 0 ? 0.0 : static_cast<double>(lengths.size()) / runs; }
 };
 
-// Initial paths through up to this many random cells (the planners' max_waypoints): closer to
-// the paper's random initial paths than our default of 3.
+// Initial paths through up to this many random cells (the planners' max_waypoints, at most 100):
+// Table 4's main rows, closer to the paper's random initial paths than our default of 3.
 inline constexpr int kWanderingVia = 100;
 // The planners' default: initial paths through 1 to this many random cells.
 inline constexpr int kDefaultVia = 3;
@@ -50,10 +50,11 @@ struct Method {
   std::string label;
   std::string algorithm;
   ParamValues params;
-  int paper_row = -1;  // row of as_bfo_paper's tables; -1: the paper has no such method
+  int paper_row = -1;  // row of as_bfo_paper's tables; -1: an ablation row, not the paper's
 };
 
-// The rows of Table 4: the paper's three methods, then ours with wandering initial paths.
+// The rows of Table 4: the paper's three methods (AS-BFO and GA with wandering initial paths),
+// then the ablation: AS-BFO and GA with near-A* initial paths (through 1 to kDefaultVia cells).
 const std::vector<Method>& Methods();
 
 struct Sweep {
@@ -62,6 +63,9 @@ struct Sweep {
   std::vector<int> values;
   std::string paper_env1;  // the paper's findings (Figs. 6-9), environment 1
   std::string paper_env2;
+  // The values the paper's text names best in environment 2 (the sweep world's); 0: none named.
+  int paper_shortest_env2 = 0;
+  int paper_fewest_env2 = 0;
 };
 
 // The sweeps of the paper's section 4.1, with what its text says of them.

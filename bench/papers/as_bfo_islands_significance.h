@@ -2,7 +2,8 @@
 
 // The tests behind the AS-BFO islands report's comparisons: ACO and GA against AS-BFO in each
 // cell of Table 4 (optimal runs by Fisher's exact test; lengths, AIN and run times by rank-sum;
-// medians with bootstrap 95 % intervals).
+// the best and worst runs by a permutation test of the minima and maxima; medians with bootstrap
+// 95 % intervals).
 
 #include <cstddef>
 #include <optional>
@@ -24,6 +25,8 @@ struct MethodTests {
   bool fewer_optimal = false;       // the method reached the optimum less often
   RankComparison ain;
   RankComparison time;
+  std::optional<double> min_p;  // the shortest paths (MinPL), ExtremePermutationP
+  std::optional<double> max_p;  // the longest paths (MaxPL)
 };
 MethodTests TestAgainst(const Outcome& reference, const Outcome& other, double optimum);
 

@@ -5,6 +5,7 @@
 #include "bench/papers/comparison.h"
 #include "bench/papers/markdown_table.h"
 #include "bench/significance.h"
+#include "bench/statistics.h"
 
 namespace swarmplan::bench::as_bfo_islands {
 namespace {
@@ -146,10 +147,10 @@ std::string SweepTestsSection(const std::vector<SweepEnds>& ends, double optimum
       auto optimal = [&](const Outcome& o) {
         return absl::StrCat(OptimalRuns(o, optimum), "/", o.runs);
       };
-      table.AddRow({symbol, wander ? wandering : "default", absl::StrCat(end.smallest->value),
+      table.AddRow({symbol, wander ? wandering : "near-A*", absl::StrCat(end.smallest->value),
                     optimal(small), "", MedianWithInterval(small.lengths), "",
                     MedianWithInterval(small.ains, 3), ""});
-      table.AddRow({symbol, wander ? wandering : "default", absl::StrCat(end.largest->value),
+      table.AddRow({symbol, wander ? wandering : "near-A*", absl::StrCat(end.largest->value),
                     optimal(large), PValueCell(tests.optimal_p), MedianWithInterval(large.lengths),
                     PValueCell(tests.length.p), MedianWithInterval(large.ains, 3),
                     PValueCell(tests.ain.p)});
@@ -171,7 +172,7 @@ std::string SweepClaimVerdicts(const std::vector<SweepEnds>& ends) {
       absl::StrAppend(&text, "untested (one value only).\n");
       continue;
     }
-    absl::StrAppend(&text, EndsName(*end), ", default initial paths: ", Verdict(end->tests, claim),
+    absl::StrAppend(&text, EndsName(*end), ", near-A* initial paths: ", Verdict(end->tests, claim),
                     "; wandering: ", Verdict(end->wandering_tests, claim), ".\n");
   }
   return text;
@@ -186,6 +187,52 @@ std::string SweepDifferences(const std::vector<SweepEnds>& ends, bool wandering)
     }
   }
   return list;
+}
+
+std::string PaperBestValueVerdicts(const std::vector<SweepRow>& rows) {
+  std::string text;
+  for (const Sweep& sweep : Sweeps()) {
+    std::vector<const SweepRow*> values;
+    for (const SweepRow& row : rows) {
+      if (row.sweep == &sweep) values.push_back(&row);
+    }
+    if (values.size() < 2) continue;
+    struct Named {
+      int value;
+      const char* what;    // "shortest", "fewest"
+      const char* metric;  // "lengths", "AIN"
+      std::vector<double> Outcome::*values;
+    };
+    for (const Named& named :
+         {Named{sweep.paper_shortest_env2, "shortest", "lengths", &Outcome::lengths},
+          Named{sweep.paper_fewest_env2, "fewest iterations", "AIN", &Outcome::ains}}) {
+      const SweepRow* best = nullptr;
+      const SweepRow* ours = nullptr;
+      for (const SweepRow* row : values) {
+        if (row->value == named.value) best = row;
+        const std::optional<double> mean = Mean(row->wandering.*named.values);
+        if (mean && (ours == nullptr || *mean < *Mean(ours->wandering.*named.values) - 1e-12)) {
+          ours = row;
+        }
+      }
+      if (best == nullptr) continue;
+      int lower = 0, higher = 0;
+      for (const SweepRow* other : values) {
+        if (other == best) continue;
+        const RankComparison c =
+            CompareRanks(best->wandering.*named.values, other->wandering.*named.values);
+        if (!Significant(c.p)) continue;
+        ++(c.other_higher ? lower : higher);
+      }
+      absl::StrAppend(&text, "- ", sweep.symbol, " = ", named.value, " (the paper's ", named.what,
+                      " in environment 2): its ", named.metric, " are lower than at ", lower,
+                      " and higher than at ", higher, " of the ", values.size() - 1,
+                      " other values (rank-sum, p < ", kSignificanceLevel, "); our lowest mean ",
+                      named.metric == std::string("AIN") ? "AIN" : "APL", " is at ", sweep.symbol,
+                      " = ", ours != nullptr ? absl::StrCat(ours->value) : "–", ".\n");
+    }
+  }
+  return text;
 }
 
 }  // namespace swarmplan::bench::as_bfo_islands

@@ -35,4 +35,10 @@ std::string SweepClaimVerdicts(const std::vector<SweepEnds>& ends);
 // "P = 80 against P = 10: lengths lower (p = 0.002)"; empty when there are none.
 std::string SweepDifferences(const std::vector<SweepEnds>& ends, bool wandering);
 
+// The paper's best single values of environment 2 (the sweep world's), as Markdown list items:
+// each against every other value of its sweep by the rank-sum test (lengths for "shortest at",
+// AIN for "fewest at"), with the wandering initial paths, and our own lowest value beside it.
+// Empty when no sweep has the named value and another.
+std::string PaperBestValueVerdicts(const std::vector<SweepRow>& rows);
+
 }  // namespace swarmplan::bench::as_bfo_islands

@@ -164,7 +164,7 @@ TEST_F(AsBfoQuickReportTest, AinRangeIsTheAinRowsRange) {
   const std::string low = NumberCell(*std::min_element(ains.begin(), ains.end()), 2);
   const std::string high = NumberCell(*std::max_element(ains.begin(), ains.end()), 2);
   const std::string expected = low == high ? low : absl::StrCat(low, "–", high);
-  EXPECT_EQ(Between(*report_, "its AIN in Table 4 is ", " with our default"), expected);
+  EXPECT_EQ(Between(*report_, "Its AIN in Table 4 is ", " with the wandering"), expected);
 }
 
 }  // namespace
