@@ -118,9 +118,15 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
                                  "its vertices, linearly interpolated")
                       .Ours());
   specs.push_back(ParamSpec::Double("step_fraction", 0.003, 0.0, 1.0, "",
-                                    "init=seeded: initial step delta0 as a fraction of each "
-                                    "coordinate's range (terrain: the map's extent in Y, its "
-                                    "height range in Z), so the steps scale with the map")
+                                    "init=seeded, or init=paper with step_units=map: initial "
+                                    "step delta0 as a fraction of each coordinate's range "
+                                    "(terrain: the map's extent in Y, its height range in Z), so "
+                                    "the steps scale with the map")
+                      .Ours());
+  specs.push_back(ParamSpec::Enum("step_units", "cells", {"cells", "map"},
+                                  "init=paper: cells: the initial step is step0 cells (the "
+                                  "paper's); map: it is step_fraction of each coordinate's range, "
+                                  "as with init=seeded (ignored by init=seeded)")
                       .Ours());
   specs.push_back(ParamSpec::Bool("reject_infeasible", true,
                                   "undo a move whose path is infeasible (below ground + "
@@ -128,8 +134,8 @@ std::vector<ParamSpec> BasParams(const BasVariant& v) {
                                   "false: the paper's moves, which always step")
                       .Ours());
   specs.push_back(ParamSpec::Double("step0", 8.0, 0.0, 1e9, "cells",
-                                    "init=paper: initial step delta0 (on a terrain: times its "
-                                    "cell size)"));
+                                    "init=paper with step_units=cells: initial step delta0 (on "
+                                    "a terrain: times its cell size)"));
   specs.push_back(ParamSpec::Double("step_decay", 0.998, 0.0, 1.0, "", "lambda1: delta decay"));
   specs.push_back(ParamSpec::Double("c", 2.0, 1e-9, 1e9, "", "antennae length d = delta / c"));
   specs.push_back(ParamSpec::Double("theta0", 21.0, 0.0, 1e9, "cells",
@@ -210,8 +216,8 @@ std::unique_ptr<Planner> MakeBasPlanner(const BasVariant& v, const ParamSet& par
   seeding.seeded = params.Enum("init") == "seeded";
   seeding.seeds = static_cast<int>(IntOr(params, "seeds", 1));
   seeding.vertices_per_control = static_cast<int>(params.Int("vertices_per_control"));
-  options.relative_steps = seeding.seeded;
-  options.step0 = seeding.seeded ? params.Double("step_fraction") : params.Double("step0");
+  options.relative_steps = seeding.seeded || params.Enum("step_units") == "map";
+  options.step0 = options.relative_steps ? params.Double("step_fraction") : params.Double("step0");
   options.reject_infeasible = params.Bool("reject_infeasible");
   options.step_decay = params.Double("step_decay");
   options.c = params.Double("c");
