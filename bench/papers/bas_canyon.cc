@@ -1,6 +1,6 @@
 // BAS paper (seed 000), section IV.A: ACO, BAS, LFS-BAS and ACO-BAS on a 3D canyon (its Table 2 /
-// Fig. 4, Table 3 and Fig. 6), SIO-BAS against Multi-BAS (its Table 4), the issue's options for
-// the paper's beetles, and the headline comparisons on ten generated canyons.
+// Fig. 4, Table 3 and Fig. 6), SIO-BAS against Multi-BAS (its Table 4), two step options of ours
+// for the paper's beetles, and the headline comparisons on ten generated canyons.
 
 #include <algorithm>
 #include <filesystem>
@@ -251,7 +251,7 @@ absl::StatusOr<std::string> RunBasCanyon(const ExperimentOptions& options) {
                   bas::FitnessTable(*c, world->lattice.cost), "\n");
   absl::StrAppend(
       &report,
-      "## Table D (the issue): the paper's beetles with infeasible moves undone and steps scaled "
+      "## Table D (ours): the paper's beetles with infeasible moves undone and steps scaled "
       "to the map\n\n"
       "Each beetle with the paper's settings (Tables A and B) plus `reject_infeasible=true`, "
       "plus `step_units=map` (step_fraction ",

@@ -177,7 +177,7 @@ std::string Discussion(const DiscussionInputs& in) {
       "family beats ACO is ",
       AllSupported(family_vs_aco) ? "reproduced" : "not reproduced", ".\n", HeadlineItems(in),
       "\n**Why the beetles stay where they start.**\n", FirstPathItem(in),
-      "\n**The issue's options (Table D): init=paper with infeasible moves undone and/or steps "
+      "\n**Two options of ours (Table D): init=paper with infeasible moves undone and/or steps "
       "scaled to the map.**\n",
       OptionItems(in),
       "\n**Table 3 (iterations).** Run i of every iteration count has the same seed, so a shorter "

@@ -18,7 +18,7 @@ struct DiscussionInputs {
   double yardstick = 0.0;                         // its lattice optimum
   std::vector<std::string> paper_setting_labels;  // beetle rows with the paper's δ0 = 8 cells
   std::vector<PairTest> headline;                 // the paper's claims (Tables A and B)
-  std::vector<PairTest> options;                  // the options (Table D)
+  std::vector<PairTest> options;                  // our step options (Table D)
   std::vector<std::string> step_labels;           // Table C's rows
   RowSet sweep_set;                               // Table 3's rows
   std::vector<PairTest> sweep;                    // Table 3

@@ -1,7 +1,7 @@
 #pragma once
 
-// The runs of the bas-canyon reproduction: planner configurations (the paper's settings and the
-// issue's options) and what their runs on a canyon measured.
+// The runs of the bas-canyon reproduction: planner configurations (the paper's settings and our
+// step options) and what their runs on a canyon measured.
 
 #include <string>
 #include <vector>
@@ -40,7 +40,7 @@ struct RowRuns {
 ParamValues PaperBeetleParams(int iterations);
 // The paper's ACO: 20 ants.
 ParamValues PaperAcoParams(int iterations);
-// The options on top of the paper's beetle: undo infeasible moves; initial step
+// Our step options on top of the paper's beetle: undo infeasible moves; initial step
 // `step_fraction` of the map's ranges instead of δ0 cells.
 ParamValues RejectInfeasible(ParamValues params);
 ParamValues MapScaledSteps(ParamValues params, double step_fraction);

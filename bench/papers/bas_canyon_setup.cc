@@ -55,7 +55,7 @@ std::string SetupSection(const CanyonWorld& world, const SetupFigures& f) {
       "population ",
       kPaperPopulation, ", ", f.population_iterations,
       " iterations. The paper's μ = 0.998 is not defined anywhere in it and is not used.\n",
-      "- **The issue's options (Table D, ours)**: `reject_infeasible=true` (an infeasible move "
+      "- **Two options of ours (Table D)**: `reject_infeasible=true` (an infeasible move "
       "is undone) and `step_units=map` with `step_fraction=",
       f.map_step_fraction,
       "` (the initial step is that fraction of each coordinate's range: the map's extent in Y, "

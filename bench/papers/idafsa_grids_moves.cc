@@ -65,8 +65,8 @@ std::string MovesVerdictSection(const std::vector<VerdictScope>& paper,
                 "from supported (%s)",
                 changed, verdicts, now_supported, no_longer_supported, changes);
   return absl::StrCat(
-      "## The moves before issue 15 (ablation, ours)\n\n"
-      "Every configuration run again with the same seeds and the moves used before issue 15: a "
+      "## The earlier random-closer moves (ablation, ours)\n\n"
+      "Every configuration run again with the same seeds and the planner's earlier moves: a "
       "fish stepping toward its target took a random valid move closer to it "
       "(`move=random-closer`), and the prey search drew try_number cells with repeats and "
       "unusable cells counted as tries (`prey_culling=false`). The main tables use the paper's "

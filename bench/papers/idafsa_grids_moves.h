@@ -1,7 +1,7 @@
 #pragma once
 
 // The IDAFSA reproduction's ablation of the fish moves: every configuration run again with the
-// moves used before issue 15 (a random valid move closer to the target, prey search without the
+// planner's earlier moves (a random valid move closer to the target, prey search without the
 // culled factor), and the paper's per-claim verdicts for idafsa held against the ones those
 // moves give.
 
@@ -13,7 +13,7 @@
 
 namespace swarmplan::bench {
 
-// `config` with the moves used before issue 15: move=random-closer, prey_culling=false.
+// `config` with the planner's earlier moves: move=random-closer, prey_culling=false.
 FishConfig WithRandomCloserMoves(const FishConfig& config);
 
 // The paper's claims tested in one place, e.g. "10 x 10, shipped world" or "20 x 20, across
