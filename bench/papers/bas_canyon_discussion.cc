@@ -108,9 +108,10 @@ std::string OptionItems(const DiscussionInputs& in) {
     const RowRuns* reference = in.shipped.Find(test.pair.reference);
     if (other == nullptr || reference == nullptr) continue;
     const std::optional<double> median = Median(other->fitness);
-    const std::string against = absl::StrCat(
-        "against ", test.pair.reference, " (median ", MedianText(in.shipped, test.pair.reference),
-        "): ", Verdict(test), " (", test.pair.claim, ", rank-sum ", PText(test.fitness.p), ")");
+    const std::string against =
+        absl::StrCat("against ", test.pair.reference, " (median ",
+                     MedianText(in.shipped, test.pair.reference), "): ", Verdict(test),
+                     " (claim: ", test.pair.claim, "; rank-sum ", PText(test.fitness.p), ")");
     if (IsAco(test.pair.reference)) {
       absl::StrAppend(&out, "- ", test.pair.other, " ", against, ".\n");
       continue;
