@@ -14,22 +14,6 @@ namespace {
 using namespace swarmplan::testing;
 using Variant = FishSwarmParams::Variant;
 
-// 10 x 10 with a few blocks, like the paper's small map.
-std::vector<std::string> SmallRows() {
-  return {
-      "..........",  //
-      "..........",  //
-      "..##......",  //
-      "..##...#..",  //
-      ".......#..",  //
-      "....#..#..",  //
-      "....#.....",  //
-      "....#..##.",  //
-      ".......##.",  //
-      "..........",  //
-  };
-}
-
 SearchResult RunFish(const FishSwarmParams& params, const Problem& problem) {
   FishSwarmPlanner planner{params};
   NullObserver none;
@@ -39,7 +23,7 @@ SearchResult RunFish(const FishSwarmParams& params, const Problem& problem) {
 }
 
 TEST(FishSwarmTest, IdafsaFindsAShortValidPath) {
-  const MapPtr map = GridMap(SmallRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 0}, Cell{9, 9});
   FishSwarmPlanner planner{FishSwarmParams::Defaults(Variant::kIdafsa)};
   RecordingObserver observer;
@@ -66,7 +50,7 @@ TEST(FishSwarmTest, DafsaMovesAreSegmentChecked) {
 }
 
 TEST(FishSwarmTest, AfsaWithEachNeighbourhood) {
-  const MapPtr map = GridMap(SmallRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 0}, Cell{9, 9}, 5);
   const double optimum = AStarLength(*map->grid(), Cell{0, 0}, Cell{9, 9});
   for (Neighbourhood n : {Neighbourhood::k4, Neighbourhood::k8, Neighbourhood::k24}) {
@@ -105,7 +89,7 @@ TEST(FishSwarmTest, UncheckedJumpsAreReportedAsCollisions) {
 }
 
 TEST(FishSwarmTest, LongMovesKeepTheClearance) {
-  const MapPtr map = GridMap(SmallRows());
+  const MapPtr map = GridMap(FishSmallRows());
   Problem problem = GridProblemFor(map, Cell{0, 0}, Cell{9, 9}, 4);
   problem.clearance = 0.3;
   const SearchResult r = RunFish(FishSwarmParams::Defaults(Variant::kIdafsa), problem);
@@ -114,7 +98,7 @@ TEST(FishSwarmTest, LongMovesKeepTheClearance) {
 }
 
 TEST(FishSwarmTest, SameSeedSamePath) {
-  const MapPtr map = GridMap(SmallRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 9}, Cell{9, 0}, 99);
   const FishSwarmParams params = FishSwarmParams::Defaults(Variant::kIdafsa);
   const SearchResult a = RunFish(params, problem);
@@ -124,7 +108,7 @@ TEST(FishSwarmTest, SameSeedSamePath) {
 }
 
 TEST(FishSwarmTest, StopsWithinOneIterationOfACancel) {
-  const MapPtr map = GridMap(SmallRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 0}, Cell{9, 9});
   FishSwarmPlanner planner{FishSwarmParams::Defaults(Variant::kIdafsa)};
   StopToken stop;

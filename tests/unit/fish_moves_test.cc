@@ -17,22 +17,6 @@ namespace {
 using namespace swarmplan::testing;
 using Variant = FishSwarmParams::Variant;
 
-// 10 x 10 with blocks between the corners, like the paper's small map.
-std::vector<std::string> FishMovesRows() {
-  return {
-      "..........",  //
-      "..........",  //
-      "..##......",  //
-      "..##...#..",  //
-      ".......#..",  //
-      "....#..#..",  //
-      "....#.....",  //
-      "....#..##.",  //
-      ".......##.",  //
-      "..........",  //
-  };
-}
-
 // Whether the segment a-b meets the closed square [x0, x0 + 1] x [y0, y0 + 1] (Liang-Barsky
 // clipping); touching an edge or a corner counts.
 bool SegmentMeetsSquare(const Point3& a, const Point3& b, double x0, double y0) {
@@ -185,7 +169,7 @@ SearchResult Solve(const FishSwarmParams& params, const Problem& problem) {
 }
 
 TEST(FishMovesTest, PaperMovesGiveValidPathsFromStartToGoal) {
-  const std::vector<std::string> rows = FishMovesRows();
+  const std::vector<std::string> rows = FishSmallRows();
   const MapPtr map = GridMap(rows);
   int found = 0;
   for (Variant variant : {Variant::kDafsa, Variant::kIdafsa}) {
@@ -203,7 +187,7 @@ TEST(FishMovesTest, PaperMovesGiveValidPathsFromStartToGoal) {
 }
 
 TEST(FishMovesTest, SameSeedSamePathWithEitherMove) {
-  const MapPtr map = GridMap(FishMovesRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 9}, Cell{9, 0}, 42);
   for (FishSwarmParams::Move move :
        {FishSwarmParams::Move::kDirection, FishSwarmParams::Move::kRandomCloser}) {
@@ -218,7 +202,7 @@ TEST(FishMovesTest, SameSeedSamePathWithEitherMove) {
 }
 
 TEST(FishMovesTest, TheMoveChangesTheSearch) {
-  const MapPtr map = GridMap(FishMovesRows());
+  const MapPtr map = GridMap(FishSmallRows());
   const Problem problem = GridProblemFor(map, Cell{0, 0}, Cell{9, 9}, 5);
   const SearchResult direction =
       Solve(WithMove(Variant::kIdafsa, FishSwarmParams::Move::kDirection), problem);

@@ -41,6 +41,22 @@ inline Problem GridProblemFor(const MapPtr& map, Cell start, Cell goal, uint64_t
   return p;
 }
 
+// 10 x 10 with a few blocks between the corners, like the fish swarm paper's small map.
+inline std::vector<std::string> FishSmallRows() {
+  return {
+      "..........",  //
+      "..........",  //
+      "..##......",  //
+      "..##...#..",  //
+      ".......#..",  //
+      "....#..#..",  //
+      "....#.....",  //
+      "....#..##.",  //
+      ".......##.",  //
+      "..........",  //
+  };
+}
+
 // 12 x 12 with two walls: the shortest path must bend twice.
 inline std::vector<std::string> TwoWallsRows() {
   return {
