@@ -236,7 +236,8 @@ std::string SignificanceSection(const std::vector<WorldRun>& worlds, std::string
 std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
                        const std::string& significant, const std::string& replicated,
                        const std::string& unstated, const std::string& equal_budget,
-                       const std::string& interpolations, const std::string& convergence) {
+                       const std::string& interpolations, const std::string& convergence,
+                       const std::string& waypoints) {
   std::string out = "## Discussion\n\n";
   for (const WorldRun& w : worlds) {
     const CellStats& aem = w.cells.at({"aem-bso", "spline"});
@@ -408,7 +409,8 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       "ended penalised here, with the spline: ",
       penalised,
       ". Candidate causes of long valid paths are settings the paper does not state: no "
-      "velocity bound in BSO and PSO, a velocity bound or another pulse rate schedule in BA "
+      "velocity bound in BSO and PSO, a velocity bound or another pulse rate schedule in BA, the "
+      "number of waypoints "
       "(*The baselines' unstated settings* above): ",
       unstated,
       ". Another candidate, baselines that let positions leave the box, is not tested: our "
@@ -423,9 +425,10 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       "antennae step schedule of the BSO family, and the elite mutation constants k1..k3. In the "
       "complex world the best paths of aem-bso, aem-bso-linear, bso and pso, with the spline and "
       "with straight segments, all end within a fraction of a percent of one length, several "
-      "percent above the optimum (see the tables). It is not the "
-      "waypoint count: a spot check with 6 waypoints (aem-bso, seeds 1-3, not in the tables) "
-      "gave 122.6 and 126.7 and one penalised run. The swarms presumably all settle on one way "
+      "percent above the optimum (see the tables). With twice the "
+      "waypoints (*The baselines' unstated settings*): ",
+      waypoints,
+      ". The swarms presumably all settle on one way "
       "around the circles while the optimum takes another, narrower one that their "
       "initialisation rarely samples; so the yardstick shows a gap that neither the paper's "
       "tables nor the comparison between planners could reveal. It is a gap of all of them; "
@@ -607,7 +610,8 @@ std::string Report(const std::vector<WorldRun>& worlds, const Replication& repli
                             "that the tests support are: ",
                             replicated);
   absl::StrAppend(&out, Discussion(worlds, iterations, significant, replicated, unstated,
-                                   equal_budget, interpolations, convergence));
+                                   equal_budget, interpolations, convergence,
+                                   aem_bso::WaypointCountSentence(variant_runs, ours)));
   return out;
 }
 

@@ -43,6 +43,7 @@ const std::vector<BaselineVariant>& BaselineVariants() {
        "pulse rate set on accept",
        "pulse rate per iteration from 0",
        {{"pulse_schedule", std::string("per-iteration")}}},
+      {"aem-bso", "3 waypoints", "6 waypoints", {{"waypoints", int64_t{6}}}},
   };
   return *variants;
 }
@@ -81,8 +82,9 @@ std::string UnstatedSettingsSection(const std::vector<VariantRuns>& runs, const 
   std::string out = "## The baselines' unstated settings\n\n";
   absl::StrAppend(
       &out,
-      "The paper gives no velocity bound for BSO and PSO and no parameters for BA. Each row "
-      "pair runs one baseline with the spline as in Table 3, at our setting and with one "
+      "The paper gives no velocity bound for BSO and PSO, no parameters for BA and no number "
+      "of waypoints. Each row pair runs one planner with the spline as in Table 3, at our setting "
+      "and with one "
       "setting changed (`velocity_fraction` = ",
       kUnboundedVelocity,
       ": a bound of ten times the box's span, none in effect; BA's `pulse_schedule`). "
@@ -140,6 +142,28 @@ std::string UnstatedSettingsSection(const std::vector<VariantRuns>& runs, const 
                       "the paper's, ",
                       close, compared),
       verdict);
+  return out;
+}
+
+std::string WaypointCountSentence(const std::vector<VariantRuns>& runs, const OurCell& ours) {
+  std::string out;
+  for (const VariantRuns& environment : runs) {
+    for (size_t v = 0; v < BaselineVariants().size(); ++v) {
+      const BaselineVariant& variant = BaselineVariants()[v];
+      if (variant.params.count("waypoints") == 0) continue;
+      const CellStats& base = ours(environment.environment, variant.planner);
+      const CellStats& changed = environment.variants[v];
+      AppendListItem(
+          &out,
+          absl::StrCat(environment.environment, ": ", variant.planner, " with ", variant.changed,
+                       " found ", FoundCell(changed), " (", variant.ours, ": ", FoundCell(base),
+                       ", Fisher ", PValueCell(SuccessP(changed.Found(), base.Found())),
+                       "), median length ", MedianWithInterval(changed.lengths), " against ",
+                       MedianWithInterval(base.lengths), " (rank-sum ",
+                       PValueCell(RankSumP(changed.lengths, base.lengths)), ")"),
+          "; ");
+    }
+  }
   return out;
 }
 

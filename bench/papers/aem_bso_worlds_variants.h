@@ -52,6 +52,9 @@ using PaperStdDev = std::function<std::optional<double>(const std::string& envir
 std::string UnstatedSettingsSection(const std::vector<VariantRuns>& runs, const OurCell& ours,
                                     const PaperStdDev& paper_std, std::string* summary);
 
+// The waypoint-count variants against ours, per environment, for the discussion.
+std::string WaypointCountSentence(const std::vector<VariantRuns>& runs, const OurCell& ours);
+
 // "## Equal evaluation budgets": pso and ba at kEqualBudgetFactor times the iterations against
 // aem-bso; `summary` gets one sentence for the discussion.
 std::string EqualBudgetSection(const std::vector<VariantRuns>& runs, const OurCell& ours,

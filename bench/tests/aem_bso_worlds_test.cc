@@ -183,7 +183,7 @@ TEST(AemBsoWorldsTest, QuickReportDigestIsPinned) {
   options.worlds_dir = std::string(SWARMPLAN_SOURCE_DIR) + "/bench/worlds";
   absl::StatusOr<std::string> report = RunAemBsoWorlds(options);
   ASSERT_TRUE(report.ok()) << report.status();
-  EXPECT_EQ(ReportDigest(WithoutTimeColumns(*report), {"## Discussion"}), "6b303f471d59f608");
+  EXPECT_EQ(ReportDigest(WithoutTimeColumns(*report), {"## Discussion"}), "f8ec3712ac6ee9c4");
 }
 
 }  // namespace
