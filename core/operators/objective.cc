@@ -11,6 +11,15 @@ void Objective::SampleAroundStraightPath(double /*band*/, Rng& rng, Eigen::Vecto
   for (int j = 0; j < dim(); ++j) x[j] = rng.Uniform(lower()[j], upper()[j]);
 }
 
+void Objective::Bound(PositionBound bound, Eigen::VectorXd& x) const {
+  if (bound == PositionBound::kBox) {
+    Clamp(x);
+    return;
+  }
+  const Eigen::VectorXd reach = kFarBoxSpans * (upper() - lower());
+  x = x.cwiseMax(lower() - reach).cwiseMin(upper() + reach);
+}
+
 void Objective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
   Eigen::VectorXd x(xs.rows());
   for (int j = 0; j < xs.cols(); ++j) {

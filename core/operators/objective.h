@@ -10,6 +10,15 @@ namespace swarmplan {
 
 class Rng;
 
+// How far an optimiser's positions may go.
+enum class PositionBound {
+  kBox,  // every new position is clamped to the objective's box
+  // Positions may leave the box, up to kFarBoxSpans times its span on each side (which keeps
+  // coordinates finite); the box then bounds the initial population and the velocities only.
+  kFar,
+};
+inline constexpr double kFarBoxSpans = 10.0;
+
 struct Evaluation {
   double fitness = 0.0;
   bool feasible = false;  // the decoded path keeps the safety distance (always true off maps)
@@ -45,6 +54,8 @@ class Objective {
   virtual bool SampleNearGuesses(Rng& /*rng*/, Eigen::VectorXd& /*x*/) const { return false; }
 
   void Clamp(Eigen::VectorXd& x) const { x = x.cwiseMax(lower()).cwiseMin(upper()); }
+  // Clamp for PositionBound::kBox; for kFar, the clamp to the box grown by kFarBoxSpans spans.
+  void Bound(PositionBound bound, Eigen::VectorXd& x) const;
 };
 
 // An objective whose decision vectors are paths on a map.

@@ -10,14 +10,14 @@
 namespace swarmplan {
 
 // The 2D waypoint path problem of AEM-BSO: decision vector [x1..xk, y1..yk] inside the map's
-// rectangle, path as WaypointPathBuilder builds it, fitness z = L (1 + M xi) with L the path's
-// length and xi the number of obstacles it comes closer to than max(d_safe, clearance) (eq 21),
-// or the fleet objective when the options carry one. Feasible means xi = 0. Evaluated by the
-// FitnessEngine: no allocation per evaluation.
+// rectangle shrunk by `box_inset` on each side, path as WaypointPathBuilder builds it, fitness z =
+// L (1 + M xi) with L the path's length and xi the number of obstacles it comes closer to than
+// max(d_safe, clearance) (eq 21), or the fleet objective when the options carry one. Feasible means
+// xi = 0. Evaluated by the FitnessEngine: no allocation per evaluation.
 class WaypointObjective final : public PathObjective {
  public:
   static absl::StatusOr<std::unique_ptr<WaypointObjective>> Create(
-      const Problem& problem, const WaypointFitnessOptions& options);
+      const Problem& problem, const WaypointFitnessOptions& options, double box_inset = 0.0);
 
   int dim() const override { return 2 * waypoints_; }
   const Eigen::VectorXd& lower() const override { return lower_; }
@@ -33,7 +33,7 @@ class WaypointObjective final : public PathObjective {
   void SampleAroundStraightPath(double band, Rng& rng, Eigen::VectorXd& x) const override;
 
  private:
-  WaypointObjective(const Problem& problem, int waypoints, FitnessEngine engine);
+  WaypointObjective(const Problem& problem, int waypoints, double box_inset, FitnessEngine engine);
 
   Point2 start_, goal_;
   int waypoints_;

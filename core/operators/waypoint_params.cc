@@ -51,6 +51,13 @@ std::vector<ParamSpec> WaypointSeedingParams() {
       "L (1 + M xi)");
 }
 
+ParamSpec BoxInsetParam() {
+  return ParamSpec::Double("box_inset", 0.0, 0.0, 1e9, "map units",
+                           "init=paper: the search box is the map's rectangle shrunk by this on "
+                           "each side (a world larger than the region the paper searches)")
+      .Ours();
+}
+
 WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {
   WaypointFitnessOptions options;
   options.waypoints = static_cast<int>(params.Int("waypoints"));
@@ -63,6 +70,7 @@ WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params) {
 
 WaypointSeeding WaypointSeedingFrom(const ParamSet& params) {
   WaypointSeeding seeding;
+  seeding.box_inset = DoubleOr(params, "box_inset", 0.0);
   if (!params.values().count("init")) {
     seeding.seeded = false;
     return seeding;
@@ -91,7 +99,7 @@ PathSearchPlanner::ObjectiveFactory WaypointObjectiveFactory(const WaypointFitne
           return std::unique_ptr<PathObjective>(std::move(*objective));
         }
         absl::StatusOr<std::unique_ptr<WaypointObjective>> objective =
-            WaypointObjective::Create(problem, options);
+            WaypointObjective::Create(problem, options, seeding.box_inset);
         if (!objective.ok()) return objective.status();
         return std::unique_ptr<PathObjective>(std::move(*objective));
       };

@@ -21,14 +21,19 @@ WaypointFitnessOptions WaypointFitnessFrom(const ParamSet& params);
 struct WaypointSeeding {
   bool seeded = true;
   int seeds = 3;
+  // init=paper: the search box is the map's rectangle shrunk by this on each side (map units).
+  double box_inset = 0.0;
 };
+// `box_inset`, for the waypoint planners whose paper initialisation honours it.
+ParamSpec BoxInsetParam();
 // `init` and `seeds`, for the planners that offer both initialisations; `seeded_meaning` and
 // `paper_meaning` say what each initialisation does in that planner.
 std::vector<ParamSpec> SeedingParams(const std::string& seeded_meaning,
                                      const std::string& paper_meaning);
 // SeedingParams for the waypoint planners.
 std::vector<ParamSpec> WaypointSeedingParams();
-// The paper's initialisation when the planner has no `init` parameter.
+// The paper's initialisation when the planner has no `init` parameter; box_inset 0 when it has
+// no `box_inset`.
 WaypointSeeding WaypointSeedingFrom(const ParamSet& params);
 
 // The most control points of a seeded waypoint path: one per vertex and per segment of a seed

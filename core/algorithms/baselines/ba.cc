@@ -67,7 +67,7 @@ SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, i
                          rng.Uniform(-1.0, 1.0) * mean_loudness * options.walk_fraction * span[j];
         }
       }
-      objective.Clamp(candidate);
+      objective.Bound(options.positions, candidate);
       const Evaluation e = objective.Evaluate(candidate);
       ++out.evaluations;
       if (e.fitness <= f[i] && rng.Uniform() < loudness[i]) {

@@ -36,6 +36,7 @@ struct BatOptions {
   // Each velocity coordinate is kept within this fraction of its coordinate's span; 0: no bound.
   double velocity_fraction = 0.0;
   PulseSchedule pulse_schedule = PulseSchedule::kOnAccept;
+  PositionBound positions = PositionBound::kBox;
 };
 
 SearchOutcome RunBatAlgorithm(Objective& objective, const BatOptions& options, int t_max, Rng& rng,

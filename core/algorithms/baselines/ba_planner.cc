@@ -45,6 +45,8 @@ PlannerInfo BatInfo() {
   info.params.push_back(ParamSpec::Double("walk_fraction", 0.01, 0.0, 1.0, "",
                                           "local walk scale as a fraction of the span")
                             .Ours());
+  info.params.push_back(PositionsParam());
+  info.params.push_back(BoxInsetParam());
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     const BatOptions options = BatOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(

@@ -59,7 +59,8 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
       vb.setZero();
       if (options.antennae) {
         b = rng.UnitDirection(dim);
-        const AntennaeProbe probe = ProbeAntennae(objective, x[i], b, delta / 2.0, scratch);
+        const AntennaeProbe probe =
+            ProbeAntennae(objective, x[i], b, delta / 2.0, scratch, options.positions);
         out.evaluations += 2;
         AddAntennaeStep(probe, b, delta, vb);
       }
@@ -70,7 +71,7 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
         v[i][j] = std::clamp(vj, -v_max[j], v_max[j]);
       }
       x[i] += v[i];
-      objective.Clamp(x[i]);
+      objective.Bound(options.positions, x[i]);
       const Evaluation e = objective.Evaluate(x[i]);
       ++out.evaluations;
       f[i] = e.fitness;
@@ -89,7 +90,7 @@ SearchOutcome RunBeetleSwarm(Objective& objective, const BeetleSwarmOptions& opt
     const double mean = n > 0 ? sum / n : 0.0;
     if (options.elite_mutation) {
       options.mutation.Mutate(out.best_x, t, t_max, mean, out.best_fitness, rng, mutant);
-      objective.Clamp(mutant);
+      objective.Bound(options.positions, mutant);
       const Evaluation e = objective.Evaluate(mutant);
       ++out.evaluations;
       if (e.fitness < out.best_fitness) {

@@ -14,7 +14,7 @@ namespace swarmplan {
 //   PSO       antennae off (c3 unused), random init, linear inertia.
 // Per iteration and beetle: antennae at x +- (delta/2) b give vb = -delta b sign(f_r - f_l);
 // v <- w v + c1 r1 (pbest - x) + c2 r2 (gbest - x) + c3 r3 vb (r per dimension), clamped to
-// velocity_fraction of the span; x <- x + v clamped to the box. delta starts at
+// velocity_fraction of the span; x <- x + v bounded by `positions`. delta starts at
 // step_fraction of the mean span and decays by step_decay per iteration.
 struct BeetleSwarmOptions {
   int population = 100;
@@ -29,6 +29,7 @@ struct BeetleSwarmOptions {
   double step_fraction = 0.05;
   double step_decay = 0.99;
   double velocity_fraction = 0.2;
+  PositionBound positions = PositionBound::kBox;
   bool elite_mutation = false;
   EliteMutation mutation;
 };

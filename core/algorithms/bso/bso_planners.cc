@@ -31,6 +31,8 @@ std::vector<ParamSpec> SwarmParams(bool aem, const std::string& inertia) {
   specs.push_back(ParamSpec::Double("velocity_fraction", 0.2, 0.0, 10.0, "",
                                     "velocity clamp as a fraction of the span")
                       .Ours());
+  specs.push_back(PositionsParam());
+  specs.push_back(BoxInsetParam());
   if (aem) {
     specs.push_back(
         ParamSpec::Double("k1", 0.1, -100.0, 100.0, "", "elite mutation G1 = k1 t / tmax (eq 7)")

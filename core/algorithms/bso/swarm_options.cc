@@ -3,6 +3,21 @@
 #include "absl/strings/str_cat.h"
 
 namespace swarmplan {
+namespace {
+
+PositionBound PositionsFrom(const ParamSet& params) {
+  return params.Enum("positions") == "far" ? PositionBound::kFar : PositionBound::kBox;
+}
+
+}  // namespace
+
+ParamSpec PositionsParam() {
+  return ParamSpec::Enum("positions", "box", {"box", "far"},
+                         "box: every move is clamped to the search box; far: positions may "
+                         "leave it, up to 10 times its span on each side (the box then bounds "
+                         "the initial population and the velocities only)")
+      .Ours();
+}
 
 BeetleSwarmOptions BeetleSwarmOptionsFromParams(bool aem, const ParamSet& params) {
   BeetleSwarmOptions options;
@@ -17,6 +32,7 @@ BeetleSwarmOptions BeetleSwarmOptionsFromParams(bool aem, const ParamSet& params
   options.step_fraction = params.Double("step_fraction");
   options.step_decay = params.Double("step_decay");
   options.velocity_fraction = params.Double("velocity_fraction");
+  options.positions = PositionsFrom(params);
   options.elite_mutation = aem;
   if (aem) options.mutation = {params.Double("k1"), params.Double("k2"), params.Double("k3")};
   return options;
@@ -32,6 +48,7 @@ BeetleSwarmOptions PsoOptionsFromParams(const ParamSet& params) {
   options.c1 = params.Double("c1");
   options.c2 = params.Double("c2");
   options.velocity_fraction = params.Double("velocity_fraction");
+  options.positions = PositionsFrom(params);
   return options;
 }
 
@@ -47,6 +64,7 @@ BatOptions BatOptionsFromParams(const ParamSet& params) {
   options.walk_fraction = params.Double("walk_fraction");
   options.velocity_fraction = params.Double("velocity_fraction");
   options.pulse_schedule = *ParsePulseSchedule(params.Enum("pulse_schedule"));
+  options.positions = PositionsFrom(params);
   return options;
 }
 

@@ -14,6 +14,9 @@ namespace swarmplan {
 // The planners and anything that runs their optimisers on other objectives (the test functions
 // of bench/papers) use these, so both run the very same settings.
 
+// `positions`, the PositionBound parameter of every waypoint swarm planner.
+ParamSpec PositionsParam();
+
 // bso (aem = false), aem-bso and aem-bso-linear (aem = true; they differ in `inertia`).
 BeetleSwarmOptions BeetleSwarmOptionsFromParams(bool aem, const ParamSet& params);
 // pso: the beetle swarm loop without antennae, linear inertia.

@@ -31,6 +31,8 @@ PlannerInfo PsoInfo() {
   info.params.push_back(ParamSpec::Double("velocity_fraction", 0.2, 0.0, 10.0, "",
                                           "velocity clamp as a fraction of the span")
                             .Ours());
+  info.params.push_back(PositionsParam());
+  info.params.push_back(BoxInsetParam());
   info.factory = [](const ParamSet& params) -> std::unique_ptr<Planner> {
     const BeetleSwarmOptions options = PsoOptionsFromParams(params);
     return std::make_unique<PathSearchPlanner>(
