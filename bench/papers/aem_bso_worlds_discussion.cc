@@ -196,14 +196,10 @@ std::string Discussion(const std::vector<WorldRun>& worlds, int iterations,
       penalised,
       ". Candidate causes of long valid paths are settings the paper does not state: no "
       "velocity bound in BSO and PSO, a velocity bound or another pulse rate schedule in BA, the "
-      "number of waypoints "
-      "(*The baselines' unstated settings* above): ",
+      "number of waypoints, and baselines whose positions leave the map in a world without a "
+      "boundary (*The baselines' unstated settings* above): ",
       texts.unstated,
-      ". Another candidate, baselines that let positions leave the box, is not tested: our "
-      "planners clamp every position to the map, and a path that leaves the map counts as a "
-      "collision in the penalty, where the paper's worlds have no boundary. At equal evaluation "
-      "budgets (*Equal evaluation budgets* above): ",
-      texts.equal_budget,
+      ". At equal evaluation budgets (*Equal evaluation budgets* above): ", texts.equal_budget,
       ". Our worlds are "
       "not theirs (unpublished), and several settings are ours because the paper gives none: "
       "the waypoint "

@@ -1,5 +1,6 @@
 #include "bench/papers/aem_bso_worlds_variants.h"
 
+#include <memory>
 #include <utility>
 
 #include "absl/strings/str_cat.h"
@@ -7,6 +8,7 @@
 #include "bench/papers/comparison.h"
 #include "bench/papers/markdown_table.h"
 #include "bench/statistics.h"
+#include "core/map/shape_world.h"
 
 namespace swarmplan::bench::aem_bso {
 namespace {
@@ -18,6 +20,17 @@ constexpr double kCloseSpread = 0.5;
 // than any step can use.
 constexpr double kUnboundedVelocity = 10.0;
 constexpr double kOurVelocityBound = 0.2;
+
+// Positions may leave the map (up to kOpenWorldMargin beyond it) in a world without a boundary
+// there; the search box stays the map.
+ParamValues FreePositions() {
+  return {{"positions", std::string("far")}, {"box_inset", kOpenWorldMargin}};
+}
+ParamValues FreePositionsWithoutVelocityBound() {
+  ParamValues values = FreePositions();
+  values["velocity_fraction"] = kUnboundedVelocity;
+  return values;
+}
 
 std::string FoundCell(const CellStats& cell) { return absl::StrCat(cell.found(), "/", cell.runs); }
 
@@ -44,8 +57,25 @@ const std::vector<BaselineVariant>& BaselineVariants() {
        "pulse rate per iteration from 0",
        {{"pulse_schedule", std::string("per-iteration")}}},
       {"aem-bso", "3 waypoints", "6 waypoints", {{"waypoints", int64_t{6}}}},
+      {"bso", "positions in the map", "positions free, no boundary", FreePositions(), true},
+      {"pso", "positions in the map", "positions free, no boundary", FreePositions(), true},
+      {"ba", "positions in the map", "positions free, no boundary", FreePositions(), true},
+      {"bso", "velocity bound 20 %, positions in the map", "neither, no boundary",
+       FreePositionsWithoutVelocityBound(), true},
+      {"pso", "velocity bound 20 %, positions in the map", "neither, no boundary",
+       FreePositionsWithoutVelocityBound(), true},
   };
   return *variants;
+}
+
+absl::StatusOr<MapPtr> OpenWorld(const Map& map) {
+  const ShapeWorld* world = map.world();
+  if (world == nullptr) return absl::InvalidArgumentError("OpenWorld: not a shape world");
+  const Point2 margin(kOpenWorldMargin, kOpenWorldMargin);
+  const Bounds2 bounds{world->bounds().min - margin, world->bounds().max + margin};
+  absl::StatusOr<ShapeWorld> open = ShapeWorld::Create(bounds, world->circles(), world->polygons());
+  if (!open.ok()) return open.status();
+  return std::make_shared<const Map>(Map::Data(*std::move(open)));
 }
 
 const std::vector<std::string>& EqualBudgetPlanners() {
@@ -58,11 +88,13 @@ absl::StatusOr<VariantRuns> RunVariants(const std::string& environment, const Ma
                                         int iterations) {
   VariantRuns out;
   out.environment = environment;
+  absl::StatusOr<MapPtr> open_map = OpenWorld(*map);
+  if (!open_map.ok()) return open_map.status();
   for (const BaselineVariant& variant : BaselineVariants()) {
     PlanSpec plan = PaperPlan(variant.planner, "spline", iterations);
     for (const auto& [name, value] : variant.params) plan.params[name] = value;
     absl::StatusOr<CellStats> cell =
-        RunCell(plan, map, options, runs,
+        RunCell(plan, variant.open_world ? *open_map : map, options, runs,
                 absl::StrCat(environment, " ", variant.planner, " ", variant.changed));
     if (!cell.ok()) return cell.status();
     out.variants.push_back(*std::move(cell));
@@ -88,7 +120,13 @@ std::string UnstatedSettingsSection(const std::vector<VariantRuns>& runs, const 
       "setting changed (`velocity_fraction` = ",
       kUnboundedVelocity,
       ": a bound of ten times the box's span, none in effect; BA's `pulse_schedule`). "
-      "*Fisher*: found, changed against ours; *rank-sum*: the lengths of the found runs.\n\n");
+      "*Positions free, no boundary*: `positions=far` lets positions leave the map, and the "
+      "runs use the same circles in a world grown by ",
+      kOpenWorldMargin,
+      " on each side (`box_inset` keeps the search box, which draws the initial population and "
+      "bounds the velocities, the paper's 100 x 100); a path that leaves the map is then no "
+      "collision. *Fisher*: found, changed against ours; *rank-sum*: the lengths of the found "
+      "runs.\n\n");
   MarkdownTable table({"environment", "planner", "setting", "found", "Fisher (found)", "shortest",
                        "median [95 % CI]", "mean", "std", "rank-sum (length)", "paper std"},
                       3);

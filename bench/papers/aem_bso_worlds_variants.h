@@ -2,7 +2,8 @@
 
 // The settings of the AEM-BSO paper's baselines that it does not state (velocity bounds, BA's
 // pulse rate schedule), and its planners at equal evaluation budgets: runs against our
-// settings, with the rank-sum and Fisher tests.
+// settings, with the rank-sum and Fisher tests. Positions that leave the map are among them:
+// their runs use a world without a boundary near the map.
 
 #include <functional>
 #include <optional>
@@ -22,8 +23,17 @@ struct BaselineVariant {
   std::string ours;     // our setting, e.g. "velocity bound 20 %"
   std::string changed;  // the variant's, e.g. "no velocity bound"
   ParamValues params;   // what the variant sets on top of PaperPlan
+  // Runs on OpenWorld: the paper's worlds have no boundary.
+  bool open_world = false;
 };
 const std::vector<BaselineVariant>& BaselineVariants();
+
+// How far OpenWorld grows the map beyond each edge: as far as positions=far lets positions go
+// from the search box, the paper's 100 x 100 region.
+inline constexpr double kOpenWorldMargin = 1000.0;
+// The map with the same obstacles and its bounds grown by kOpenWorldMargin on each side; the
+// variants that run on it search the original rectangle (`box_inset`).
+absl::StatusOr<MapPtr> OpenWorld(const Map& map);
 
 // The planners that make one evaluation per member and iteration, run with this many times
 // aem-bso's iterations (a beetle evaluates itself and both antennae).
