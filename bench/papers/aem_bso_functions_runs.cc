@@ -24,6 +24,25 @@ absl::StatusOr<SwarmOptimiser> MakeOptimiser(const OptimiserConfig& config, int 
   return SwarmOptimiserFor(config.planner_id, *params);
 }
 
+// Appends a run's best so far at each checkpoint to `best_so_far[k]`.
+class CheckpointObserver final : public Observer {
+ public:
+  CheckpointObserver(const std::vector<int>& checkpoints,
+                     std::vector<std::vector<double>>& best_so_far)
+      : checkpoints_(checkpoints), best_so_far_(best_so_far) {}
+  void OnIteration(const IterationStats& stats) override {
+    if (next_ < checkpoints_.size() && stats.iteration + 1 == checkpoints_[next_]) {
+      best_so_far_[next_++].push_back(stats.best_fitness);
+    }
+  }
+  bool Complete() const { return next_ == checkpoints_.size(); }
+
+ private:
+  const std::vector<int>& checkpoints_;
+  std::vector<std::vector<double>>& best_so_far_;
+  size_t next_ = 0;
+};
+
 absl::StatusOr<FunctionCell> RunJob(const FunctionJob& job, int iterations, int population,
                                     uint64_t seed) {
   absl::StatusOr<SwarmOptimiser> optimiser = MakeOptimiser(job.config, population);
@@ -31,6 +50,8 @@ absl::StatusOr<FunctionCell> RunJob(const FunctionJob& job, int iterations, int 
   const int t_max = iterations * job.config.iteration_factor;
   const TestFunction& function = *job.function;
   FunctionCell cell;
+  const std::vector<int> checkpoints = ConvergenceCheckpoints(t_max);
+  cell.best_so_far.resize(checkpoints.size());
   double evaluations = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (int r = 0; r < job.runs; ++r) {
@@ -39,9 +60,9 @@ absl::StatusOr<FunctionCell> RunJob(const FunctionJob& job, int iterations, int 
             ? TestFunctionObjective(function, job.dim, ShiftFor(function, job.dim, kShiftFraction))
             : TestFunctionObjective(function, job.dim);
     Rng rng(seed + static_cast<uint64_t>(r));
-    NullObserver observer;
+    CheckpointObserver observer(checkpoints, cell.best_so_far);
     const SearchOutcome outcome = (*optimiser)(objective, t_max, rng, StopToken(), observer);
-    if (outcome.iterations != t_max) {
+    if (outcome.iterations != t_max || !observer.Complete()) {
       return absl::InternalError(absl::StrCat(function.id, ": ran ", outcome.iterations,
                                               " iterations instead of ", t_max));
     }
@@ -59,6 +80,14 @@ absl::StatusOr<FunctionCell> RunJob(const FunctionJob& job, int iterations, int 
 }
 
 }  // namespace
+
+std::vector<int> ConvergenceCheckpoints(int t_max) {
+  std::vector<int> out;
+  for (int t : {t_max / 100, t_max / 20, t_max / 10, t_max / 4, t_max / 2, t_max}) {
+    if (t >= 1 && (out.empty() || t > out.back())) out.push_back(t);
+  }
+  return out;
+}
 
 Eigen::VectorXd ShiftFor(const TestFunction& function, int dim, double shift_fraction) {
   Eigen::VectorXd shift(dim);

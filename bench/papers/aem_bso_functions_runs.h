@@ -32,9 +32,15 @@ struct FunctionJob {
   int runs = 0;
 };
 
-// The final best value of every run, and the cost.
+// The iterations (1-based) after which a run's best so far is kept: 1 %, 5 %, 10 %, 25 % and
+// 50 % of `t_max` and the end, without repeats or zeros.
+std::vector<int> ConvergenceCheckpoints(int t_max);
+
+// The final best value of every run, its best so far at the checkpoints, and the cost.
 struct FunctionCell {
   std::vector<double> best_values;
+  // best_so_far[k][r]: run r's best value after ConvergenceCheckpoints(t_max)[k] iterations.
+  std::vector<std::vector<double>> best_so_far;
   double evaluations_per_run = 0.0;
   double seconds = 0.0;  // wall time of all runs
 };

@@ -2,7 +2,10 @@
 #include <limits>
 #include <numbers>
 
+#include "bench/papers/aem_bso_functions_convergence.h"
+#include "bench/papers/aem_bso_functions_runs.h"
 #include "bench/papers/aem_bso_test_functions.h"
+#include "bench/papers/experiment.h"
 #include "core/algorithms/bso/swarm_options.h"
 #include "core/planner.h"
 #include "core/random.h"
@@ -142,6 +145,60 @@ TEST(AemBsoSwarmOptimiserTest, EveryPlannerOptimiserMinimisesTheSphere) {
     EXPECT_LT(outcome.best_fitness, 2000.0) << id;
   }
   EXPECT_FALSE(SwarmOptimiserFor("astar", ParamSet()).ok());
+}
+
+TEST(AemBsoConvergenceTest, CheckpointsAreFractionsOfTheRunWithoutRepeats) {
+  EXPECT_EQ(aem_bso::ConvergenceCheckpoints(1000), std::vector<int>({10, 50, 100, 250, 500, 1000}));
+  EXPECT_EQ(aem_bso::ConvergenceCheckpoints(20), std::vector<int>({1, 2, 5, 10, 20}));
+  EXPECT_EQ(aem_bso::ConvergenceCheckpoints(1), std::vector<int>({1}));
+}
+
+// Each run keeps its best so far at the checkpoints: non-increasing, ending at its final best.
+TEST(AemBsoConvergenceTest, RunsKeepTheirBestSoFarAtTheCheckpoints) {
+  aem_bso::FunctionJob job{{"AEM-BSO", "aem-bso", {}, 1}, &Function("f9"), 5, false, 3};
+  ExperimentOptions options;
+  absl::StatusOr<std::vector<aem_bso::FunctionCell>> cells =
+      aem_bso::RunFunctionJobs({job}, 40, 10, 1, options);
+  ASSERT_TRUE(cells.ok()) << cells.status();
+  const aem_bso::FunctionCell& cell = cells->front();
+  ASSERT_EQ(cell.best_so_far.size(), aem_bso::ConvergenceCheckpoints(40).size());
+  for (int r = 0; r < 3; ++r) {
+    for (size_t k = 0; k < cell.best_so_far.size(); ++k) {
+      ASSERT_EQ(cell.best_so_far[k].size(), 3u);
+      if (k > 0) {
+        EXPECT_LE(cell.best_so_far[k][r], cell.best_so_far[k - 1][r]);
+      }
+    }
+    EXPECT_EQ(cell.best_so_far.back()[r], cell.best_values[r]);
+  }
+}
+
+// The section marks where column 0 is significantly below or above another column.
+TEST(AemBsoConvergenceTest, SectionMarksSignificantCheckpoints) {
+  const std::vector<int> checkpoints = aem_bso::ConvergenceCheckpoints(20);
+  aem_bso::FunctionCell low, high, mixed;
+  for (size_t k = 0; k < checkpoints.size(); ++k) {
+    std::vector<double> small, large;
+    for (int r = 0; r < 10; ++r) {
+      small.push_back(1.0 + 0.01 * r);
+      large.push_back(5.0 + 0.01 * r);
+    }
+    low.best_so_far.push_back(small);
+    high.best_so_far.push_back(large);
+    // Above column 0 early, below it from checkpoint 2 on.
+    mixed.best_so_far.push_back(k < 2 ? large : std::vector<double>(10, 0.5));
+  }
+  const aem_bso::CellGrid cells = {{low, high, mixed}};
+  std::string summary;
+  const std::string section =
+      aem_bso::ConvergenceSection({&Function("f1")}, {"A", "B", "C"}, cells, 30, 20, &summary);
+  EXPECT_NE(section.find("| f1 | B |"), std::string::npos) << section;
+  EXPECT_NE(section.find("| all | – |"), std::string::npos) << section;
+  EXPECT_NE(section.find("| 1, 2 | 5, 10, 20 |"), std::string::npos) << section;
+  EXPECT_EQ(summary,
+            "A is significantly below all 2 other optimisers at every checkpoint on 0 of 1 "
+            "functions (none) and at the last one on 0 (none); another optimiser is "
+            "significantly below A at some checkpoint on 1 (f1 (C))");
 }
 
 }  // namespace
