@@ -30,7 +30,8 @@ std::string CheckpointList(const std::vector<std::string>& checkpoints, size_t a
 
 std::string ConvergenceSection(const std::vector<const TestFunction*>& functions,
                                const std::vector<std::string>& labels, const CellGrid& cells,
-                               int dim, int iterations, std::string* summary) {
+                               size_t first_baseline, int dim, int iterations,
+                               std::string* summary) {
   const std::vector<int> checkpoints = ConvergenceCheckpoints(iterations);
   std::string out = absl::StrCat(
       "## Fig. 2: convergence on the test functions (D = ", dim, ")\n\n",
@@ -47,9 +48,10 @@ std::string ConvergenceSection(const std::vector<const TestFunction*>& functions
   header.push_back(absl::StrCat(labels.front(), " below at"));
   header.push_back(absl::StrCat(labels.front(), " above at"));
   MarkdownTable table(header, 2);
-  std::vector<std::string> below_throughout, below_at_end, above_somewhere;
+  std::vector<std::string> below_throughout, below_baselines_throughout, below_baselines_at_end,
+      above_somewhere;
   for (size_t f = 0; f < functions.size(); ++f) {
-    bool throughout = true, at_end = true;
+    bool throughout = true, baselines_throughout = true, baselines_at_end = true;
     std::vector<std::string> above_labels;
     for (size_t c = 0; c < labels.size(); ++c) {
       const FunctionCell& cell = cells[f][c];
@@ -65,13 +67,19 @@ std::string ConvergenceSection(const std::vector<const TestFunction*>& functions
       row.push_back(CheckpointList(below, checkpoints.size()));
       row.push_back(CheckpointList(above, checkpoints.size()));
       table.AddRow(std::move(row));
-      throughout = throughout && below.size() == checkpoints.size();
-      at_end = at_end && !below.empty() && below.back() == absl::StrCat(checkpoints.back());
+      const bool all = below.size() == checkpoints.size();
+      throughout = throughout && all;
+      if (c >= first_baseline) {
+        baselines_throughout = baselines_throughout && all;
+        baselines_at_end =
+            baselines_at_end && !below.empty() && below.back() == absl::StrCat(checkpoints.back());
+      }
       if (!above.empty()) above_labels.push_back(labels[c]);
     }
     const std::string& id = functions[f]->id;
     if (throughout) below_throughout.push_back(id);
-    if (at_end) below_at_end.push_back(id);
+    if (baselines_throughout) below_baselines_throughout.push_back(id);
+    if (baselines_at_end) below_baselines_at_end.push_back(id);
     if (!above_labels.empty()) {
       above_somewhere.push_back(absl::StrCat(id, " (", absl::StrJoin(above_labels, ", "), ")"));
     }
@@ -80,13 +88,15 @@ std::string ConvergenceSection(const std::vector<const TestFunction*>& functions
   auto list = [](const std::vector<std::string>& ids) {
     return ids.empty() ? std::string("none") : absl::StrJoin(ids, ", ");
   };
+  const std::vector<std::string> baselines(labels.begin() + first_baseline, labels.end());
   const std::string finding = absl::StrCat(
-      labels.front(), " is significantly below all ", labels.size() - 1,
-      " other optimisers at every checkpoint on ", below_throughout.size(), " of ",
-      functions.size(), " functions (", list(below_throughout), ") and at the last one on ",
-      below_at_end.size(), " (", list(below_at_end), "); another optimiser is significantly below ",
-      labels.front(), " at some checkpoint on ", above_somewhere.size(), " (",
-      list(above_somewhere), ")");
+      labels.front(), " is significantly below ", absl::StrJoin(baselines, ", "),
+      " at every checkpoint on ", below_baselines_throughout.size(), " of ", functions.size(),
+      " functions (", list(below_baselines_throughout), ") and at the last one on ",
+      below_baselines_at_end.size(), " (", list(below_baselines_at_end), "); below all ",
+      labels.size() - 1, " others at every checkpoint on ", below_throughout.size(), " (",
+      list(below_throughout), "); another optimiser is significantly below ", labels.front(),
+      " at some checkpoint on ", above_somewhere.size(), " (", list(above_somewhere), ")");
   absl::StrAppend(&out, finding, ".\n\n");
   absl::StrAppend(summary, finding);
   return out;

@@ -12,10 +12,12 @@ namespace swarmplan::bench::aem_bso {
 
 // "## Fig. 2: convergence on the test functions (D = dim)": per function and optimiser the
 // median best so far at each checkpoint of `iterations`, and where column 0 (AEM-BSO) is
-// significantly below or above it (rank-sum per checkpoint). `summary` gets one sentence for
-// the discussion.
+// significantly below or above it (rank-sum per checkpoint). The columns from `first_baseline`
+// on are the baselines (BSO, PSO, BA; the others are the paper's own variants). `summary` gets
+// one sentence for the discussion.
 std::string ConvergenceSection(const std::vector<const TestFunction*>& functions,
                                const std::vector<std::string>& labels, const CellGrid& cells,
-                               int dim, int iterations, std::string* summary);
+                               size_t first_baseline, int dim, int iterations,
+                               std::string* summary);
 
 }  // namespace swarmplan::bench::aem_bso

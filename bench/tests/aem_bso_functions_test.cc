@@ -191,14 +191,14 @@ TEST(AemBsoConvergenceTest, SectionMarksSignificantCheckpoints) {
   const aem_bso::CellGrid cells = {{low, high, mixed}};
   std::string summary;
   const std::string section =
-      aem_bso::ConvergenceSection({&Function("f1")}, {"A", "B", "C"}, cells, 30, 20, &summary);
+      aem_bso::ConvergenceSection({&Function("f1")}, {"A", "B", "C"}, cells, 1, 30, 20, &summary);
   EXPECT_NE(section.find("| f1 | B |"), std::string::npos) << section;
   EXPECT_NE(section.find("| all | – |"), std::string::npos) << section;
   EXPECT_NE(section.find("| 1, 2 | 5, 10, 20 |"), std::string::npos) << section;
   EXPECT_EQ(summary,
-            "A is significantly below all 2 other optimisers at every checkpoint on 0 of 1 "
-            "functions (none) and at the last one on 0 (none); another optimiser is "
-            "significantly below A at some checkpoint on 1 (f1 (C))");
+            "A is significantly below B, C at every checkpoint on 0 of 1 functions (none) and "
+            "at the last one on 0 (none); below all 2 others at every checkpoint on 0 (none); "
+            "another optimiser is significantly below A at some checkpoint on 1 (f1 (C))");
 }
 
 }  // namespace
