@@ -8,22 +8,23 @@
 namespace swarmplan::bench::aem_bso {
 namespace {
 
-// The checkpoints (as iteration counts) where `a` is significantly below `b`.
-std::vector<std::string> CheckpointsBelow(const FunctionCell& a, const FunctionCell& b,
-                                          const std::vector<int>& checkpoints) {
-  std::vector<std::string> out;
-  for (size_t k = 0; k < checkpoints.size() && k < a.best_so_far.size(); ++k) {
-    if (SignificantlyLower(a.best_so_far[k], b.best_so_far[k])) {
-      out.push_back(absl::StrCat(checkpoints[k]));
-    }
+// The indices of the checkpoints where `a` is significantly below `b`.
+std::vector<size_t> CheckpointsBelow(const FunctionCell& a, const FunctionCell& b) {
+  std::vector<size_t> out;
+  for (size_t k = 0; k < a.best_so_far.size() && k < b.best_so_far.size(); ++k) {
+    if (SignificantlyLower(a.best_so_far[k], b.best_so_far[k])) out.push_back(k);
   }
   return out;
 }
 
-std::string CheckpointList(const std::vector<std::string>& checkpoints, size_t all) {
-  if (checkpoints.empty()) return "–";
-  if (checkpoints.size() == all) return "all";
-  return absl::StrJoin(checkpoints, ", ");
+// "all", "–" or the iteration counts of `indices`.
+std::string CheckpointList(const std::vector<size_t>& indices,
+                           const std::vector<int>& checkpoints) {
+  if (indices.empty()) return "–";
+  if (indices.size() == checkpoints.size()) return "all";
+  std::vector<int> iterations;
+  for (size_t k : indices) iterations.push_back(checkpoints[k]);
+  return absl::StrJoin(iterations, ", ");
 }
 
 }  // namespace
@@ -62,17 +63,17 @@ std::string ConvergenceSection(const std::vector<const TestFunction*>& functions
         table.AddRow(std::move(row));
         continue;
       }
-      const std::vector<std::string> below = CheckpointsBelow(cells[f][0], cell, checkpoints);
-      const std::vector<std::string> above = CheckpointsBelow(cell, cells[f][0], checkpoints);
-      row.push_back(CheckpointList(below, checkpoints.size()));
-      row.push_back(CheckpointList(above, checkpoints.size()));
+      const std::vector<size_t> below = CheckpointsBelow(cells[f][0], cell);
+      const std::vector<size_t> above = CheckpointsBelow(cell, cells[f][0]);
+      row.push_back(CheckpointList(below, checkpoints));
+      row.push_back(CheckpointList(above, checkpoints));
       table.AddRow(std::move(row));
       const bool all = below.size() == checkpoints.size();
       throughout = throughout && all;
       if (c >= first_baseline) {
         baselines_throughout = baselines_throughout && all;
         baselines_at_end =
-            baselines_at_end && !below.empty() && below.back() == absl::StrCat(checkpoints.back());
+            baselines_at_end && !below.empty() && below.back() + 1 == checkpoints.size();
       }
       if (!above.empty()) above_labels.push_back(labels[c]);
     }

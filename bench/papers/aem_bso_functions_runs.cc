@@ -62,9 +62,13 @@ absl::StatusOr<FunctionCell> RunJob(const FunctionJob& job, int iterations, int 
     Rng rng(seed + static_cast<uint64_t>(r));
     CheckpointObserver observer(checkpoints, cell.best_so_far);
     const SearchOutcome outcome = (*optimiser)(objective, t_max, rng, StopToken(), observer);
-    if (outcome.iterations != t_max || !observer.Complete()) {
+    if (outcome.iterations != t_max) {
       return absl::InternalError(absl::StrCat(function.id, ": ran ", outcome.iterations,
                                               " iterations instead of ", t_max));
+    }
+    if (!observer.Complete()) {
+      return absl::InternalError(
+          absl::StrCat(function.id, ": the optimiser did not report every iteration"));
     }
     if (absl::Status status =
             CheckOptimiserResult(function, objective, outcome.best_x, outcome.best_fitness);

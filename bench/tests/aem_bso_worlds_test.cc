@@ -111,8 +111,6 @@ int BruteForceViolations(const ShapeWorld& world, const Path& path, double thres
   return count;
 }
 
-// The bucketed ObstacleProximity (core/operators) counts exactly what the brute force counts, on
-// our worlds and on one with polygons, for spline paths that wander outside the map too.
 // The world of the runs whose positions leave the map: the same circles, no boundary within
 // kOpenWorldMargin, the same exact optimum.
 TEST(AemBsoWorldsTest, OpenWorldKeepsTheObstaclesAndTheOptimum) {
@@ -142,6 +140,8 @@ TEST(AemBsoWorldsTest, OpenWorldKeepsTheObstaclesAndTheOptimum) {
   EXPECT_FALSE(OpenWorld(Map(*RandomGrid(8, 8, 0.1, 1))).ok());
 }
 
+// The bucketed ObstacleProximity (core/operators) counts exactly what the brute force counts, on
+// our worlds and on one with polygons, for spline paths that wander outside the map too.
 TEST(AemBsoWorldsTest, BucketedProximityCountsLikeBruteForce) {
   std::vector<ShapeWorld> worlds;
   for (const AemBsoWorldSpec& spec : AemBsoWorldSpecs()) worlds.push_back(*MakeAemBsoWorld(spec));

@@ -16,8 +16,9 @@ void Objective::Bound(PositionBound bound, Eigen::VectorXd& x) const {
     Clamp(x);
     return;
   }
-  const Eigen::VectorXd reach = kFarBoxSpans * (upper() - lower());
-  x = x.cwiseMax(lower() - reach).cwiseMin(upper() + reach);
+  // One expression, evaluated per coefficient: no temporary vector per move.
+  x = x.cwiseMax(lower() - kFarBoxSpans * (upper() - lower()))
+          .cwiseMin(upper() + kFarBoxSpans * (upper() - lower()));
 }
 
 void Objective::EvaluateColumns(const Eigen::MatrixXd& xs, Evaluation* out) {
