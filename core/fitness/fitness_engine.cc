@@ -14,6 +14,45 @@ constexpr double kHardSlackCells = 2.0;
 // The curvature of an exact reversal, where the discrete formula divides by zero.
 constexpr double kReversalCurvature = 1e9;
 
+// A point's cell in a distance field (ObstacleProximity::FieldCell's arithmetic) with the
+// field's value there, and on request its bilinear value, from one scaling of the point.
+class FieldPointLocator {
+ public:
+  explicit FieldPointLocator(const DistanceField& field)
+      : field_(field),
+        inv_(field.inverse_cell_size()),
+        ox_(field.origin().x()),
+        oy_(field.origin().y()),
+        w_(static_cast<unsigned>(field.width())),
+        h_(static_cast<unsigned>(field.height())),
+        values_(field.values()) {}
+
+  // Sets `cell` (-1 outside the field) and `value` (0 outside) for (x, y).
+  void Locate(double x, double y, int32_t& cell, float& value) const {
+    LocateScaled((x - ox_) * inv_, (y - oy_) * inv_, cell, value);
+  }
+  // The same, and returns the field's bilinear value at (x, y).
+  double LocateBilinear(double x, double y, int32_t& cell, float& value) const {
+    const double u = (x - ox_) * inv_, v = (y - oy_) * inv_;
+    LocateScaled(u, v, cell, value);
+    return field_.BilinearAtGrid(u, v);
+  }
+
+ private:
+  // At grid coordinates (u, v) = (p - origin) / cell size.
+  void LocateScaled(double u, double v, int32_t& cell, float& value) const {
+    const int cx = ObstacleProximity::FloorToInt(u), cy = ObstacleProximity::FloorToInt(v);
+    const bool inside = static_cast<unsigned>(cx) < w_ && static_cast<unsigned>(cy) < h_;
+    cell = inside ? cy * static_cast<int32_t>(w_) + cx : -1;
+    value = inside ? values_[cell] : 0.0f;
+  }
+
+  const DistanceField& field_;
+  double inv_, ox_, oy_;
+  unsigned w_, h_;
+  const float* values_;
+};
+
 }  // namespace
 
 absl::StatusOr<FitnessEngine> FitnessEngine::Create(const Problem& problem,
@@ -98,7 +137,6 @@ FitnessEngine::FitnessEngine(const Problem& problem, const WaypointFitnessOption
 void FitnessEngine::Reserve(int n) {
   if (static_cast<int>(segment_.size()) >= n) return;
   segment_.resize(n);
-  clearance_.resize(n);
   cell_.resize(n);
   cell_value_.resize(n);
 }
@@ -162,28 +200,14 @@ Evaluation FitnessEngine::EvaluatePath(FleetTerms* terms) {
   return fleet_ ? Fleet(x, y, length, terms) : PaperPenalty(x, y, length);
 }
 
-void FitnessEngine::LocatePoints(const double* x, const double* y, int n, bool bilinear) {
-  const DistanceField& field = proximity_.field();
-  const double inv = field.inverse_cell_size();
-  const double ox = field.origin().x(), oy = field.origin().y();
-  const unsigned w = static_cast<unsigned>(field.width()),
-                 h = static_cast<unsigned>(field.height());
-  const float* values = field.values();
-  for (int i = 0; i < n; ++i) {
-    // The same arithmetic as ObstacleProximity::FieldCell.
-    const double u = (x[i] - ox) * inv, v = (y[i] - oy) * inv;
-    const int cx = ObstacleProximity::FloorToInt(u), cy = ObstacleProximity::FloorToInt(v);
-    const bool inside = static_cast<unsigned>(cx) < w && static_cast<unsigned>(cy) < h;
-    const int32_t cell = inside ? cy * static_cast<int32_t>(w) + cx : -1;
-    cell_[i] = cell;
-    cell_value_[i] = inside ? values[cell] : 0.0f;
-    if (bilinear) clearance_[i] = field.BilinearAtGrid(u, v);
-  }
+void FitnessEngine::LocatePoints(const double* x, const double* y, int n) {
+  const FieldPointLocator locator(proximity_.field());
+  for (int i = 0; i < n; ++i) locator.Locate(x[i], y[i], cell_[i], cell_value_[i]);
 }
 
 Evaluation FitnessEngine::PaperPenalty(const double* x, const double* y, double length) {
   const int n = n_;
-  LocatePoints(x, y, n, /*bilinear=*/false);
+  LocatePoints(x, y, n);
   const int violations = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
                                                             cell_value_.data(), n);
   return {length * (1.0 + penalty_ * violations), violations == 0};
@@ -201,22 +225,21 @@ Evaluation FitnessEngine::Fleet(const double* x, const double* y, double length,
 FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n, double length) {
   const FleetObjective& f = *fleet_;
   const Point2 lo = proximity_.lower(), hi = proximity_.upper();
-  LocatePoints(x, y, n, /*bilinear=*/true);
   const DistanceField& field = proximity_.field();
-  // Each point weighted by half of each segment beside it.
-  double shortfall = 0.0, violation = 0.0;
-  bool outside = false;
-  for (int i = 0; i < n; ++i) {
-    outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
-  }
+  const FieldPointLocator locator(field);
   // The conservative raster may read a point on an obstacle's boundary up to about 1.5 cells
   // inside it: the shortfall below the hard clearance counts beyond kHardSlackCells only, and
   // the exact count below decides feasibility.
   const double hard = hard_clearance_ - kHardSlackCells * field.cell_size();
+  // Each point weighted by half of each segment beside it; located and read in one pass.
+  double shortfall = 0.0, violation = 0.0;
+  bool outside = false;
   for (int i = 0; i < n; ++i) {
+    outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
+    const double clearance = locator.LocateBilinear(x[i], y[i], cell_[i], cell_value_[i]);
     const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
-    shortfall += std::max(0.0, f.preferred_clearance - clearance_[i]) * ds;
-    violation += std::max(0.0, hard - clearance_[i]) * ds;
+    shortfall += std::max(0.0, f.preferred_clearance - clearance) * ds;
+    violation += std::max(0.0, hard - clearance) * ds;
   }
   int obstacles = proximity_.CountViolationsScreened(x, y, segment_.data(), cell_.data(),
                                                      cell_value_.data(), n);

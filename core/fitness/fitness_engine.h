@@ -83,9 +83,8 @@ class FitnessEngine {
   Evaluation EvaluatePath(FleetTerms* terms);
   // Sizes the per-point buffers for paths of n points.
   void Reserve(int n);
-  // Fills cell_ and cell_value_ for the n points (the screen of the exact count) and, when
-  // `bilinear`, clearance_ with the field's bilinear value at each.
-  void LocatePoints(const double* x, const double* y, int n, bool bilinear);
+  // Fills cell_ and cell_value_ for the n points: the screen of the exact count.
+  void LocatePoints(const double* x, const double* y, int n);
   Evaluation PaperPenalty(const double* x, const double* y, double length);
   Evaluation Fleet(const double* x, const double* y, double length, FleetTerms* terms);
   // Length, clearance and violation terms of the n points (segment_ holds their segments); sets
@@ -115,7 +114,6 @@ class FitnessEngine {
   std::vector<double> points_x_, points_y_;  // the path being evaluated, n_ points of them
   int n_ = 0;
   std::vector<double> segment_;    // segment lengths of one path
-  std::vector<double> clearance_;  // the field at its points (fleet objective)
   std::vector<int32_t> cell_;      // their cells in the proximity's field
   std::vector<float> cell_value_;  // and the field's value there
   bool feasible_ = false;          // of the last ClearanceTerms

@@ -382,7 +382,10 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
   for (int i = 0; i + 1 < n; ++i) {
     const int32_t cell_a = cell[i], cell_b = cell[i + 1];
     const double half = 0.5 * segment_length[i];
-    if (cell_a < 0 || cell_b < 0) {
+    if (value[i] - margin > half && value[i + 1] - margin > half) {
+      // far from every labelled cell (checked first: most segments are; a point outside the
+      // field has value 0, which is never far)
+    } else if (cell_a < 0 || cell_b < 0) {
       WalkSegmentOnGrid(Point2(xs[i], ys[i]), Point2(xs[i + 1], ys[i + 1]), count, outside);
     } else if (cell_a == cell_b) {
       // the walk visits no cell
@@ -392,8 +395,6 @@ int ObstacleProximity::CountViolationsScreened(const double* xs, const double* y
       // A side neighbour: the walk visits that cell alone. (Indices one apart are neighbours
       // in a row when the segment is too short to wrap to the next row: under w - 2 cells.)
       CountObstacle(label_[cell_b], count);
-    } else if (value[i] - margin > half && value[i + 1] - margin > half) {
-      // far from every labelled cell
     } else if (region[cell_a] == region[cell_b] && reach[cell_a] > half && reach[cell_b] > half) {
       const int32_t label = region[cell_a];
       if (label >= 0 && seen_stamp_[label] != stamp_) {
