@@ -18,6 +18,11 @@ constexpr double kReversalCurvature = 1e9;
 // field's value there, and on request its bilinear value, from one scaling of the point.
 class FieldPointLocator {
  public:
+  // A point in the field's grid coordinates, (p - origin) / cell size.
+  struct GridCoordinates {
+    double u, v;
+  };
+
   explicit FieldPointLocator(const DistanceField& field)
       : field_(field),
         inv_(field.inverse_cell_size()),
@@ -28,25 +33,17 @@ class FieldPointLocator {
         values_(field.values()) {}
 
   // Sets `cell` (-1 outside the field) and `value` (0 outside) for (x, y).
-  void Locate(double x, double y, int32_t& cell, float& value) const {
-    LocateScaled((x - ox_) * inv_, (y - oy_) * inv_, cell, value);
-  }
-  // The same, and returns the field's bilinear value at (x, y).
-  double LocateBilinear(double x, double y, int32_t& cell, float& value) const {
-    const double u = (x - ox_) * inv_, v = (y - oy_) * inv_;
-    LocateScaled(u, v, cell, value);
-    return field_.BilinearAtGrid(u, v);
-  }
-
- private:
-  // At grid coordinates (u, v) = (p - origin) / cell size.
-  void LocateScaled(double u, double v, int32_t& cell, float& value) const {
-    const int cx = ObstacleProximity::FloorToInt(u), cy = ObstacleProximity::FloorToInt(v);
+  GridCoordinates Locate(double x, double y, int32_t& cell, float& value) const {
+    const GridCoordinates g{(x - ox_) * inv_, (y - oy_) * inv_};
+    const int cx = ObstacleProximity::FloorToInt(g.u), cy = ObstacleProximity::FloorToInt(g.v);
     const bool inside = static_cast<unsigned>(cx) < w_ && static_cast<unsigned>(cy) < h_;
     cell = inside ? cy * static_cast<int32_t>(w_) + cx : -1;
     value = inside ? values_[cell] : 0.0f;
+    return g;
   }
+  double Bilinear(const GridCoordinates& g) const { return field_.BilinearAtGrid(g.u, g.v); }
 
+ private:
   const DistanceField& field_;
   double inv_, ox_, oy_;
   unsigned w_, h_;
@@ -231,12 +228,18 @@ FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n
   // inside it: the shortfall below the hard clearance counts beyond kHardSlackCells only, and
   // the exact count below decides feasibility.
   const double hard = hard_clearance_ - kHardSlackCells * field.cell_size();
+  // A point whose cell's value clears both clearances by the field's bilinear drop bound adds
+  // 0 to both sums, so its bilinear value is not read.
+  const double unaffected = std::max(f.preferred_clearance, hard) + field.bilinear_drop_bound();
   // Each point weighted by half of each segment beside it; located and read in one pass.
   double shortfall = 0.0, violation = 0.0;
   bool outside = false;
   for (int i = 0; i < n; ++i) {
     outside |= x[i] < lo.x() || x[i] > hi.x() || y[i] < lo.y() || y[i] > hi.y();
-    const double clearance = locator.LocateBilinear(x[i], y[i], cell_[i], cell_value_[i]);
+    const FieldPointLocator::GridCoordinates g =
+        locator.Locate(x[i], y[i], cell_[i], cell_value_[i]);
+    if (cell_[i] >= 0 && cell_value_[i] >= unaffected) continue;
+    const double clearance = locator.Bilinear(g);
     const double ds = 0.5 * ((i > 0 ? segment_[i - 1] : 0.0) + (i + 1 < n ? segment_[i] : 0.0));
     shortfall += std::max(0.0, f.preferred_clearance - clearance) * ds;
     violation += std::max(0.0, hard - clearance) * ds;

@@ -50,6 +50,10 @@ DistanceField DistanceField::FromBlockedCells(int width, int height,
     }
   }
   field.slope_bound_ = std::hypot(step_x, step_y) / cell;
+  // Bilinear equals CellValue at a centre and moves at most step_x (step_y) per cell along x
+  // (y); a point of a cell lies within half a cell of its centre along each. With room for the
+  // rounding of the interpolation.
+  field.bilinear_drop_bound_ = 0.5 * (step_x + step_y) * (1.0 + 1e-6) + 1e-6 * cell;
   return field;
 }
 

@@ -39,6 +39,8 @@ class DistanceField {
   // The most Bilinear changes per world unit moved (its Lipschitz constant): the largest
   // differences between neighbouring centres along x and along y over the cell size, combined.
   double slope_bound() const { return slope_bound_; }
+  // How far Bilinear anywhere in a cell may lie below that cell's CellValue.
+  double bilinear_drop_bound() const { return bilinear_drop_bound_; }
 
   // The value at the centre of cell (x, y), which must be inside the field.
   float CellValue(int x, int y) const { return values_[static_cast<size_t>(y) * width_ + x]; }
@@ -72,6 +74,7 @@ class DistanceField {
   int last_x_ = 0, last_y_ = 0, step_x_ = 0, step_y_ = 0;
   double cell_ = 1.0, inv_cell_ = 1.0;
   double slope_bound_ = 0.0;
+  double bilinear_drop_bound_ = 0.0;
   Point2 origin_ = Point2::Zero();
   std::vector<float> values_;
 };

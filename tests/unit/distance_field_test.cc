@@ -1,5 +1,6 @@
 #include "core/map/distance_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +41,26 @@ TEST(DistanceFieldTest, SlopeBoundHoldsBetweenAnyTwoPoints) {
       ASSERT_LE(std::abs(field.Bilinear(p.x(), p.y()) - field.Bilinear(q.x(), q.y())),
                 field.slope_bound() * (p - q).norm() + 1e-9);
     }
+  }
+}
+
+TEST(DistanceFieldTest, BilinearDropBoundHoldsInEveryCell) {
+  Rng rng(11);
+  for (int trial = 0; trial < 6; ++trial) {
+    const double cell = rng.Uniform(0.1, 2.0);
+    const DistanceField field = RandomField(rng, 40, 30, cell, rng.Uniform(0.01, 0.3));
+    ASSERT_GT(field.bilinear_drop_bound(), 0.0);
+    double closest = 1e300;  // the smallest margin seen: the bound is not loose everywhere
+    for (int i = 0; i < 20000; ++i) {
+      const Point2 p(rng.Uniform(-3.0, -3.0 + 40 * cell), rng.Uniform(7.0, 7.0 + 30 * cell));
+      const int cx = std::min(39, static_cast<int>((p.x() + 3.0) / cell));
+      const int cy = std::min(29, static_cast<int>((p.y() - 7.0) / cell));
+      const double margin =
+          field.Bilinear(p.x(), p.y()) - (field.CellValue(cx, cy) - field.bilinear_drop_bound());
+      ASSERT_GE(margin, 0.0) << "at (" << p.x() << ", " << p.y() << ")";
+      closest = std::min(closest, margin);
+    }
+    EXPECT_LT(closest, 0.5 * field.bilinear_drop_bound());
   }
 }
 
