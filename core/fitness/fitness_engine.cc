@@ -228,9 +228,12 @@ FleetTerms FitnessEngine::ClearanceTerms(const double* x, const double* y, int n
   // inside it: the shortfall below the hard clearance counts beyond kHardSlackCells only, and
   // the exact count below decides feasibility.
   const double hard = hard_clearance_ - kHardSlackCells * field.cell_size();
-  // A point whose cell's value clears both clearances by the field's bilinear drop bound adds
-  // 0 to both sums, so its bilinear value is not read.
-  const double unaffected = std::max(f.preferred_clearance, hard) + field.bilinear_drop_bound();
+  // A point whose cell's value clears by the field's bilinear drop bound the hard clearance, and
+  // the preferred one where there is one (the shortfall is not used otherwise), adds 0 to the
+  // sums that count, so its bilinear value is not read.
+  const double unaffected =
+      (f.preferred_clearance > 0 ? std::max(f.preferred_clearance, hard) : hard) +
+      field.bilinear_drop_bound();
   // Each point weighted by half of each segment beside it; located and read in one pass.
   double shortfall = 0.0, violation = 0.0;
   bool outside = false;
