@@ -13,6 +13,8 @@ constexpr double kHalfCellDiagonal = 0.70710678118654757;  // sqrt(2) / 2, round
 // Cell-boundary tolerance of the exact traversal (in cells): a segment this close to a blocked
 // square counts as touching it, so rounding can only make the check stricter.
 constexpr double kTouchEps = 1e-9;
+// The most cells TraversalFree reads in a segment's box before its exact walk.
+constexpr int kShortSegmentBoxCells = 9;
 // Beyond this upper bound (cells) Clearance uses the distance-field bound instead of a scan.
 constexpr double kExactReach = 4.0;
 // Smallest step of the sphere tracing (cells); the slack of SegmentFree is half of it.
@@ -250,6 +252,7 @@ bool GridCollisionChecker::SegmentFreeByScan(const Point3& a, const Point3& b,
 
 bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const {
   if (!InMap(a) || !InMap(b)) return false;
+  if (ShortSegmentBoxFree(a, b)) return true;
   const double y_min = std::min(a.y(), b.y());
   const double y_max = std::max(a.y(), b.y());
   const double dy = b.y() - a.y();
@@ -273,6 +276,26 @@ bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const
     const int col1 = std::min(grid_.width() - 1, static_cast<int>(std::floor(x_hi + kTouchEps)));
     for (int col = col0; col <= col1; ++col) {
       if (grid_.IsBlocked(col, row)) return false;
+    }
+  }
+  return true;
+}
+
+bool GridCollisionChecker::ShortSegmentBoxFree(const Point2& a, const Point2& b) const {
+  // The rows and columns TraversalFree reads lie within the segment's box widened by its
+  // tolerance; widened by twice it, the box also covers the rounding of its band ends.
+  auto floor_int = [](double v) {
+    const int i = static_cast<int>(v);
+    return v < i ? i - 1 : i;
+  };
+  const int x0 = std::max(0, -floor_int(-(std::min(a.x(), b.x()) - 2 * kTouchEps)) - 1);
+  const int x1 = std::min(grid_.width() - 1, floor_int(std::max(a.x(), b.x()) + 2 * kTouchEps));
+  const int y0 = std::max(0, -floor_int(-(std::min(a.y(), b.y()) - 2 * kTouchEps)) - 1);
+  const int y1 = std::min(grid_.height() - 1, floor_int(std::max(a.y(), b.y()) + 2 * kTouchEps));
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) > kShortSegmentBoxCells) return false;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (grid_.IsBlocked(x, y)) return false;
     }
   }
   return true;

@@ -37,6 +37,9 @@ class GridCollisionChecker final : public CollisionChecker {
 
  private:
   bool InMap(const Point2& local) const;
+  // TraversalFree's verdict when it is true and the segment's box holds a few cells: all of
+  // them free. False when some is blocked or the box is larger.
+  bool ShortSegmentBoxFree(const Point2& a, const Point2& b) const;
   // Clearance at a point given in grid coordinates, in cells.
   double LocalClearance(const Point2& local) const;
   // Smallest clearance along a..b (grid coordinates, in cells) while it stays >= floor;

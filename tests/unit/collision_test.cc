@@ -184,6 +184,30 @@ TEST(GridCollisionTest, TraversalMatchesExactGeometry) {
   }
 }
 
+// Short segments whose ends lie on a quarter-cell lattice run along borders and through corners,
+// where touching a blocked square decides: every verdict is the exact one.
+TEST(GridCollisionTest, ShortSegmentsOnCellBordersMatchExactGeometry) {
+  Rng rng(17);
+  for (int trial = 0; trial < 4; ++trial) {
+    const OccupancyGrid grid = RandomGrid(rng, 20, 16, 0.1 + 0.1 * trial);
+    GridCollisionChecker checker(grid);
+    int free_count = 0, blocked_count = 0;
+    for (int i = 0; i < 3000; ++i) {
+      const Point2 a(0.25 * rng.UniformInt(1, 79), 0.25 * rng.UniformInt(1, 63));
+      const Point2 b = (a + 0.25 * Point2(rng.UniformInt(-6, 6), rng.UniformInt(-6, 6)))
+                           .cwiseMax(Point2(0.25, 0.25))
+                           .cwiseMin(Point2(19.75, 15.75));
+      const bool free = checker.TraversalFree(a, b);
+      ASSERT_EQ(free, BruteSegmentClearance(grid, a, b) > 0.0)
+          << a.transpose() << " -> " << b.transpose();
+      free_count += free;
+      blocked_count += !free;
+    }
+    EXPECT_GT(free_count, 100);
+    EXPECT_GT(blocked_count, 100);
+  }
+}
+
 // SegmentFree and SegmentFreeByScan against the brute-force distance to every blocked square.
 TEST(GridCollisionTest, SegmentChecksWithClearanceAreExact) {
   Rng rng(13);
