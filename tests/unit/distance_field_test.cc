@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/random.h"
@@ -29,39 +30,53 @@ bool DenseKeeps(const DistanceField& field, const Point2& a, const Point2& b, do
   return true;
 }
 
-TEST(DistanceFieldTest, SlopeBoundHoldsBetweenAnyTwoPoints) {
-  Rng rng(5);
+// A 40 x 30 field of a random cell size and density (origin (-3, 7)), and points inside it.
+struct SizedField {
+  double cell;
+  DistanceField field;
+
+  Point2 RandomPoint(Rng& rng) const {
+    return Point2(rng.Uniform(-3.0, -3.0 + 40 * cell), rng.Uniform(7.0, 7.0 + 30 * cell));
+  }
+};
+
+// check(field, rng) on six random fields.
+template <typename Check>
+void OnRandomFields(uint64_t seed, Check check) {
+  Rng rng(seed);
   for (int trial = 0; trial < 6; ++trial) {
     const double cell = rng.Uniform(0.1, 2.0);
-    const DistanceField field = RandomField(rng, 40, 30, cell, rng.Uniform(0.01, 0.3));
-    ASSERT_GT(field.slope_bound(), 0.0);
-    for (int i = 0; i < 2000; ++i) {
-      const Point2 p(rng.Uniform(-3.0, -3.0 + 40 * cell), rng.Uniform(7.0, 7.0 + 30 * cell));
-      const Point2 q = p + Point2(rng.Uniform(-2, 2), rng.Uniform(-2, 2)) * cell;
-      ASSERT_LE(std::abs(field.Bilinear(p.x(), p.y()) - field.Bilinear(q.x(), q.y())),
-                field.slope_bound() * (p - q).norm() + 1e-9);
-    }
+    check(SizedField{cell, RandomField(rng, 40, 30, cell, rng.Uniform(0.01, 0.3))}, rng);
   }
 }
 
+TEST(DistanceFieldTest, SlopeBoundHoldsBetweenAnyTwoPoints) {
+  OnRandomFields(5, [](const SizedField& f, Rng& rng) {
+    ASSERT_GT(f.field.slope_bound(), 0.0);
+    for (int i = 0; i < 2000; ++i) {
+      const Point2 p = f.RandomPoint(rng);
+      const Point2 q = p + Point2(rng.Uniform(-2, 2), rng.Uniform(-2, 2)) * f.cell;
+      ASSERT_LE(std::abs(f.field.Bilinear(p.x(), p.y()) - f.field.Bilinear(q.x(), q.y())),
+                f.field.slope_bound() * (p - q).norm() + 1e-9);
+    }
+  });
+}
+
 TEST(DistanceFieldTest, BilinearDropBoundHoldsInEveryCell) {
-  Rng rng(11);
-  for (int trial = 0; trial < 6; ++trial) {
-    const double cell = rng.Uniform(0.1, 2.0);
-    const DistanceField field = RandomField(rng, 40, 30, cell, rng.Uniform(0.01, 0.3));
-    ASSERT_GT(field.bilinear_drop_bound(), 0.0);
+  OnRandomFields(11, [](const SizedField& f, Rng& rng) {
+    const double bound = f.field.bilinear_drop_bound();
+    ASSERT_GT(bound, 0.0);
     double closest = 1e300;  // the smallest margin seen: the bound is not loose everywhere
     for (int i = 0; i < 20000; ++i) {
-      const Point2 p(rng.Uniform(-3.0, -3.0 + 40 * cell), rng.Uniform(7.0, 7.0 + 30 * cell));
-      const int cx = std::min(39, static_cast<int>((p.x() + 3.0) / cell));
-      const int cy = std::min(29, static_cast<int>((p.y() - 7.0) / cell));
-      const double margin =
-          field.Bilinear(p.x(), p.y()) - (field.CellValue(cx, cy) - field.bilinear_drop_bound());
+      const Point2 p = f.RandomPoint(rng);
+      const int cx = std::min(39, static_cast<int>((p.x() + 3.0) / f.cell));
+      const int cy = std::min(29, static_cast<int>((p.y() - 7.0) / f.cell));
+      const double margin = f.field.Bilinear(p.x(), p.y()) - (f.field.CellValue(cx, cy) - bound);
       ASSERT_GE(margin, 0.0) << "at (" << p.x() << ", " << p.y() << ")";
       closest = std::min(closest, margin);
     }
-    EXPECT_LT(closest, 0.5 * field.bilinear_drop_bound());
-  }
+    EXPECT_LT(closest, 0.5 * bound);
+  });
 }
 
 TEST(DistanceFieldTest, SegmentKeepsGivesTheDenseVerdict) {
