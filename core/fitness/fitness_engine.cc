@@ -35,7 +35,7 @@ class FieldPointLocator {
   // Sets `cell` (-1 outside the field) and `value` (0 outside) for (x, y).
   GridCoordinates Locate(double x, double y, int32_t& cell, float& value) const {
     const GridCoordinates g{(x - ox_) * inv_, (y - oy_) * inv_};
-    const int cx = ObstacleProximity::FloorToInt(g.u), cy = ObstacleProximity::FloorToInt(g.v);
+    const int cx = FloorToInt(g.u), cy = FloorToInt(g.v);
     const bool inside = static_cast<unsigned>(cx) < w_ && static_cast<unsigned>(cy) < h_;
     cell = inside ? cy * static_cast<int32_t>(w_) + cx : -1;
     value = inside ? values_[cell] : 0.0f;

@@ -283,15 +283,12 @@ bool GridCollisionChecker::TraversalFree(const Point2& a, const Point2& b) const
 
 bool GridCollisionChecker::ShortSegmentBoxFree(const Point2& a, const Point2& b) const {
   // The rows and columns TraversalFree reads lie within the segment's box widened by its
-  // tolerance; widened by twice it, the box also covers the rounding of its band ends.
-  auto floor_int = [](double v) {
-    const int i = static_cast<int>(v);
-    return v < i ? i - 1 : i;
-  };
-  const int x0 = std::max(0, -floor_int(-(std::min(a.x(), b.x()) - 2 * kTouchEps)) - 1);
-  const int x1 = std::min(grid_.width() - 1, floor_int(std::max(a.x(), b.x()) + 2 * kTouchEps));
-  const int y0 = std::max(0, -floor_int(-(std::min(a.y(), b.y()) - 2 * kTouchEps)) - 1);
-  const int y1 = std::min(grid_.height() - 1, floor_int(std::max(a.y(), b.y()) + 2 * kTouchEps));
+  // tolerance; widened by twice it, the box also covers the rounding of its band ends. Their
+  // first row (column) is ceil(lower end) - 1, with ceil(t) = -floor(-t).
+  const int x0 = std::max(0, -FloorToInt(-(std::min(a.x(), b.x()) - 2 * kTouchEps)) - 1);
+  const int x1 = std::min(grid_.width() - 1, FloorToInt(std::max(a.x(), b.x()) + 2 * kTouchEps));
+  const int y0 = std::max(0, -FloorToInt(-(std::min(a.y(), b.y()) - 2 * kTouchEps)) - 1);
+  const int y1 = std::min(grid_.height() - 1, FloorToInt(std::max(a.y(), b.y()) + 2 * kTouchEps));
   if ((x1 - x0 + 1) * (y1 - y0 + 1) > kShortSegmentBoxCells) return false;
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {

@@ -49,11 +49,6 @@ class ObstacleProximity {
     }
     return cy * field_->width() + cx;
   }
-  // floor(v) as an int without a libm call (v within the int range).
-  static int FloorToInt(double v) {
-    const int i = static_cast<int>(v);
-    return v < i ? i - 1 : i;
-  }
 
   // The map's rectangle in world coordinates.
   Point2 lower() const { return lower_; }
