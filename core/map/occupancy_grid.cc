@@ -67,14 +67,81 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
   return grid;
 }
 
+OccupancyGrid OccupancyGrid::WithBlocked(const std::vector<Cell>& cells) const {
+  OccupancyGrid grid;
+  grid.width_ = width_;
+  grid.height_ = height_;
+  grid.resolution_ = resolution_;
+  grid.origin_ = origin_;
+  grid.cells_ = cells_;
+  grid.blocked_ = blocked_;
+  grid.blocked_count_ = blocked_count_;
+  std::vector<Cell> added;
+  for (const Cell& c : cells) {
+    if (!InBounds(c) || grid.blocked_[Index(c.x, c.y)]) continue;
+    grid.blocked_[Index(c.x, c.y)] = 1;
+    grid.cells_[Index(c.x, c.y)] = kOccupied;
+    ++grid.blocked_count_;
+    added.push_back(c);
+  }
+  if (added.empty()) {
+    grid.distance_ = distance_;  // the same cells: the same field
+  } else if (distance_field_computed()) {
+    grid.distance_->base = distance_;
+    grid.distance_->added = std::move(added);
+  }
+  return grid;
+}
+
 const std::vector<double>& OccupancyGrid::ComputeDistanceField() const {
   LazyDistanceField& field = *distance_;
   std::call_once(field.once, [&] {
-    field.values = SquaredDistanceTransform(width_, height_, blocked_);
-    for (double& d : field.values) d = std::sqrt(d) * resolution_;
+    if (field.base != nullptr) {
+      field.values = DerivedDistanceField(field.base->values, field.added);
+      field.base.reset();
+      field.added = {};
+    } else {
+      field.values = SquaredDistanceTransform(width_, height_, blocked_);
+      for (double& d : field.values) d = std::sqrt(d) * resolution_;
+    }
     field.ready.store(true, std::memory_order_release);
   });
   return field.values;
+}
+
+std::vector<double> OccupancyGrid::DerivedDistanceField(const std::vector<double>& base,
+                                                        const std::vector<Cell>& added) const {
+  // The nearest blocked cell is the base's or one of `added`: the field is the smaller of the
+  // base's and the distance to `added`, in squared whole cells before the square root exactly as
+  // a transform of the whole grid would give it. Only cells within the base's largest distance
+  // of an added cell can come nearer to it, so the distance to `added` is measured in their
+  // bounding box widened by that distance.
+  std::vector<double> values = base;
+  const double largest = *std::max_element(base.begin(), base.end());
+  const int reach = std::isfinite(largest) && largest / resolution_ < width_ + height_
+                        ? static_cast<int>(std::ceil(largest / resolution_)) + 1
+                        : width_ + height_;
+  int x0 = width_, y0 = height_, x1 = -1, y1 = -1;
+  for (const Cell& c : added) {
+    x0 = std::min(x0, c.x);
+    y0 = std::min(y0, c.y);
+    x1 = std::max(x1, c.x);
+    y1 = std::max(y1, c.y);
+  }
+  x0 = std::max(0, x0 - reach);
+  y0 = std::max(0, y0 - reach);
+  x1 = std::min(width_ - 1, x1 + reach);
+  y1 = std::min(height_ - 1, y1 + reach);
+  const int box_width = x1 - x0 + 1, box_height = y1 - y0 + 1;
+  std::vector<uint8_t> in_box(static_cast<size_t>(box_width) * box_height, 0);
+  for (const Cell& c : added) in_box[static_cast<size_t>(c.y - y0) * box_width + (c.x - x0)] = 1;
+  const std::vector<double> squared = SquaredDistanceTransform(box_width, box_height, in_box);
+  for (int y = y0; y <= y1; ++y) {
+    const double* from = squared.data() + static_cast<size_t>(y - y0) * box_width;
+    double* to = values.data() + Index(x0, y);
+    for (int i = 0; i < box_width; ++i) to[i] = std::min(to[i], std::sqrt(from[i]) * resolution_);
+  }
+  return values;
 }
 
 Cell OccupancyGrid::CellAt(const Point2& p) const {

@@ -57,6 +57,11 @@ class OccupancyGrid {
   // Whether the distance field has been computed (by this grid or a copy).
   bool distance_field_computed() const { return distance_->ready.load(std::memory_order_acquire); }
 
+  // This grid with `cells` blocked too: set to kOccupied, skipping cells outside the grid or
+  // blocked already (repeats are fine). When this grid's distance field has been computed, the
+  // new grid's is derived from it on first use, measured again only near the new cells.
+  OccupancyGrid WithBlocked(const std::vector<Cell>& cells) const;
+
   Point2 CellCenter(Cell c) const { return origin_ + Point2(c.x + 0.5, c.y + 0.5) * resolution_; }
   // The cell containing a world point (may be outside the grid).
   Cell CellAt(const Point2& p) const;
@@ -71,8 +76,15 @@ class OccupancyGrid {
     std::once_flag once;
     std::atomic<bool> ready{false};
     std::vector<double> values;
+    // Set by WithBlocked: the computed field of the grid this one was made from, and the cells
+    // blocked since.
+    std::shared_ptr<const LazyDistanceField> base;
+    std::vector<Cell> added;
   };
   const std::vector<double>& ComputeDistanceField() const;
+  // The field from `base`, the field of a grid that differs from this one only in `added`.
+  std::vector<double> DerivedDistanceField(const std::vector<double>& base,
+                                           const std::vector<Cell>& added) const;
 
   int width_ = 0;
   int height_ = 0;

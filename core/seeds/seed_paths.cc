@@ -47,32 +47,26 @@ double WallOverlap(const Map& map, double clearance) {
   return clearance + 1e-3 * Diagonal(map);
 }
 
-// Blocks the free cells along the wall, adding them to `blocked`.
-void BlockSegment(const OccupancyGrid& grid, const Wall& wall, std::vector<int8_t>& cells,
-                  std::vector<Cell>& blocked) {
+// Adds the free cells along the wall that `blocked` does not hold yet.
+void AddWallCells(const OccupancyGrid& grid, const Wall& wall, std::vector<Cell>& blocked) {
   const double step = 0.25 * grid.resolution();
   const int n = 1 + static_cast<int>(std::ceil((wall.b - wall.a).norm() / step));
   for (int i = 0; i <= n; ++i) {
     const Cell c = grid.CellAt(wall.a + (wall.b - wall.a) * (static_cast<double>(i) / n));
     if (!grid.InBounds(c) || grid.IsBlocked(c.x, c.y)) continue;
-    int8_t& cell = cells[static_cast<size_t>(c.y) * grid.width() + c.x];
-    if (cell == OccupancyGrid::kOccupied) continue;
-    cell = OccupancyGrid::kOccupied;
+    if (std::find(blocked.begin(), blocked.end(), c) != blocked.end()) continue;
     blocked.push_back(c);
   }
 }
 
 // `original` with every wall added as an obstacle; on grids a patch of `original`, so that the
-// exact planner's clearance grids are measured again only along the walls.
+// exact planner's clearance grids and the distance field are measured again only along the walls.
 absl::StatusOr<MapPtr> WithWalls(const MapPtr& original, const std::vector<Wall>& walls) {
   if (const OccupancyGrid* grid = original->grid()) {
-    std::vector<int8_t> cells = grid->cells();
     std::vector<Cell> blocked;
-    for (const Wall& wall : walls) BlockSegment(*grid, wall, cells, blocked);
-    absl::StatusOr<OccupancyGrid> cut = OccupancyGrid::Create(
-        grid->width(), grid->height(), std::move(cells), grid->resolution(), grid->origin());
-    if (!cut.ok()) return cut.status();
-    return std::make_shared<const Map>(Map::Data(*std::move(cut)),
+    for (const Wall& wall : walls) AddWallCells(*grid, wall, blocked);
+    OccupancyGrid cut = grid->WithBlocked(blocked);
+    return std::make_shared<const Map>(Map::Data(std::move(cut)),
                                        Map::GridPatch{original, std::move(blocked)});
   }
   const ShapeWorld& world = *original->world();

@@ -313,6 +313,23 @@ TEST(ExactAnyAngleClearanceTest, ClearanceGridBlockingMatchesARebuild) {
         ASSERT_EQ(patched.height(), rebuilt.height());
         EXPECT_EQ(patched.cells(), rebuilt.cells());
         EXPECT_NE(patched.cells(), ClearanceGrid(base, clearance, bound).cells());
+        // The runs too: copied from the base's on the rows no new cell reaches.
+        const AnyAngleGrid runs_patched = AnyAngleGrid::BuildBlocking(
+            AnyAngleGrid::Build(base, clearance, bound), cut, added, clearance, bound);
+        const AnyAngleGrid runs_rebuilt = AnyAngleGrid::Build(cut, clearance, bound);
+        EXPECT_EQ(runs_patched.planning_grid().cells(), rebuilt.cells());
+        EXPECT_EQ(runs_patched.planning_grid().BlockedCount(), rebuilt.BlockedCount());
+        ASSERT_EQ(runs_patched.height(), runs_rebuilt.height());
+        for (int y = 0; y < runs_rebuilt.height(); ++y) {
+          const auto as_pairs = [&](const AnyAngleGrid& g) {
+            std::vector<std::pair<int, int>> runs;
+            for (const AnyAngleGrid::Run* r = g.RunsBegin(y); r != g.RunsEnd(y); ++r) {
+              runs.emplace_back(r->begin, r->end);
+            }
+            return runs;
+          };
+          ASSERT_EQ(as_pairs(runs_patched), as_pairs(runs_rebuilt)) << "row " << y;
+        }
       }
     }
   }

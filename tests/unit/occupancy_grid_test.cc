@@ -1,6 +1,7 @@
 #include "core/map/occupancy_grid.h"
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "absl/strings/str_cat.h"
@@ -58,6 +59,51 @@ TEST(OccupancyGridTest, BlockedCountOnALargeGrid) {
       const int8_t v = cells[static_cast<size_t>(y) * w + x];
       ASSERT_EQ(grid->IsBlocked(x, y), v == -1 || v >= OccupancyGrid::kBlockedThreshold);
     }
+  }
+}
+
+// WithBlocked gives the grid Create would give for the same cells, including its distance
+// field bit for bit, whether that field is derived from the base's or computed anew.
+TEST(OccupancyGridTest, WithBlockedMatchesTheGridCreatedWithThoseCells) {
+  std::mt19937_64 rng(29);
+  struct Case {
+    int width, height;
+    double density, resolution;
+  };
+  for (const Case& c : {Case{37, 23, 0.1, 1.0}, Case{160, 120, 0.02, 0.25}, Case{90, 70, 0.0, 0.5},
+                        Case{64, 64, 0.4, 2.0}}) {
+    SCOPED_TRACE(::testing::Message() << c.width << " x " << c.height << " density " << c.density);
+    std::bernoulli_distribution is_blocked(c.density);
+    std::vector<int8_t> cells(static_cast<size_t>(c.width) * c.height);
+    for (int8_t& v : cells) v = is_blocked(rng) ? OccupancyGrid::kUnknown : OccupancyGrid::kFree;
+    const OccupancyGrid base = *OccupancyGrid::Create(c.width, c.height, cells, c.resolution);
+    // A wall across the grid, single cells at the corners and at random, repeats, cells outside.
+    std::vector<Cell> added;
+    for (int x = 0; x < c.width; ++x) added.push_back({x, c.height / 3});
+    added.push_back({0, 0});
+    added.push_back({c.width - 1, c.height - 1});
+    std::uniform_int_distribution<int> x_of(0, c.width - 1), y_of(0, c.height - 1);
+    for (int i = 0; i < 5; ++i) added.push_back({x_of(rng), y_of(rng)});
+    added.push_back(added.back());
+    added.push_back({-1, 3});
+    added.push_back({c.width, 0});
+    for (const Cell& a : added) {
+      if (a.x < 0 || a.x >= c.width || a.y < 0 || a.y >= c.height) continue;
+      int8_t& v = cells[static_cast<size_t>(a.y) * c.width + a.x];
+      if (v == OccupancyGrid::kFree) v = OccupancyGrid::kOccupied;
+    }
+    const OccupancyGrid created = *OccupancyGrid::Create(c.width, c.height, cells, c.resolution);
+    for (const bool base_field_first : {false, true}) {
+      SCOPED_TRACE(base_field_first ? "derived field" : "field computed anew");
+      if (base_field_first) base.distance_field();
+      const OccupancyGrid blocked = base.WithBlocked(added);
+      EXPECT_EQ(blocked.cells(), created.cells());
+      EXPECT_EQ(blocked.BlockedCount(), created.BlockedCount());
+      EXPECT_EQ(blocked.distance_field(), created.distance_field());
+    }
+    EXPECT_NE(base.distance_field(), created.distance_field());
+    const OccupancyGrid same = base.WithBlocked({{-1, -1}});
+    EXPECT_EQ(&same.distance_field(), &base.distance_field());
   }
 }
 

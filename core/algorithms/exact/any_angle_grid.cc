@@ -61,6 +61,30 @@ OccupancyGrid SubdividedGrid(const OccupancyGrid& grid, int s, std::vector<int8_
   return *std::move(subdivided);
 }
 
+// The sub-cells of a ClearanceGrid that lie near one of the map cells `blocked` (repeats
+// included).
+std::vector<Cell> SubCellsNear(const OccupancyGrid& grid, const std::vector<Cell>& blocked,
+                               const SubCellReach& near_by) {
+  const int s = near_by.s;
+  const int w = grid.width() * s, h = grid.height() * s;
+  std::vector<Cell> near;
+  for (const Cell& b : blocked) {
+    if (!grid.InBounds(b)) continue;
+    const Cell lowest{b.x * s, b.y * s};
+    const int x0 = std::max(0, (b.x - near_by.window) * s);
+    const int x1 = std::min(w - 1, (b.x + near_by.window + 1) * s - 1);
+    const int y0 = std::max(0, (b.y - near_by.window) * s);
+    const int y1 = std::min(h - 1, (b.y + near_by.window + 1) * s - 1);
+    for (int sy = y0; sy <= y1; ++sy) {
+      for (int sx = x0; sx <= x1; ++sx) {
+        const bool inside = sx / s == b.x && sy / s == b.y;
+        if (inside || near_by.Near(sx, sy, lowest)) near.push_back({sx, sy});
+      }
+    }
+  }
+  return near;
+}
+
 }  // namespace
 
 OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, ClearanceBound bound) {
@@ -116,29 +140,9 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
 OccupancyGrid ClearanceGridBlocking(const OccupancyGrid& base, const OccupancyGrid& grid,
                                     const std::vector<Cell>& blocked, double clearance,
                                     ClearanceBound bound) {
-  const SubCellReach near_by(grid, clearance, bound);
-  const int s = near_by.s;
-  const int w = grid.width() * s, h = grid.height() * s;
-  std::vector<int8_t> cells = base.cells();
   // A sub-cell is blocked when it lies near any blocked cell: the base's blocked sub-cells stay,
   // and those near a newly blocked cell join them.
-  for (const Cell& b : blocked) {
-    if (!grid.InBounds(b)) continue;
-    const Cell lowest{b.x * s, b.y * s};
-    const int x0 = std::max(0, (b.x - near_by.window) * s);
-    const int x1 = std::min(w - 1, (b.x + near_by.window + 1) * s - 1);
-    const int y0 = std::max(0, (b.y - near_by.window) * s);
-    const int y1 = std::min(h - 1, (b.y + near_by.window + 1) * s - 1);
-    for (int sy = y0; sy <= y1; ++sy) {
-      for (int sx = x0; sx <= x1; ++sx) {
-        const bool inside = sx / s == b.x && sy / s == b.y;
-        if (inside || near_by.Near(sx, sy, lowest)) {
-          cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
-        }
-      }
-    }
-  }
-  return SubdividedGrid(grid, s, std::move(cells));
+  return base.WithBlocked(SubCellsNear(grid, blocked, SubCellReach(grid, clearance, bound)));
 }
 
 AnyAngleGrid AnyAngleGrid::Build(const OccupancyGrid& grid, double clearance,
@@ -156,11 +160,27 @@ AnyAngleGrid AnyAngleGrid::Build(const OccupancyGrid& grid, double clearance,
 AnyAngleGrid AnyAngleGrid::BuildBlocking(const AnyAngleGrid& base, const OccupancyGrid& grid,
                                          const std::vector<Cell>& blocked, double clearance,
                                          ClearanceBound bound) {
-  if (clearance > 0) {
-    return OnPlanningGrid(std::make_shared<const OccupancyGrid>(
-        ClearanceGridBlocking(base.planning_grid(), grid, blocked, clearance, bound)));
+  if (clearance <= 0) return Build(grid, clearance, bound);
+  const std::vector<Cell> near = SubCellsNear(grid, blocked, SubCellReach(grid, clearance, bound));
+  AnyAngleGrid result;
+  result.subdivided_ =
+      std::make_shared<const OccupancyGrid>(base.planning_grid().WithBlocked(near));
+  result.planning_ = result.subdivided_.get();
+  // Only the rows that hold a newly blocked sub-cell have other runs than the base's.
+  std::vector<uint8_t> changed(result.height(), 0);
+  for (const Cell& c : near) changed[c.y] = 1;
+  result.runs_.reserve(base.runs_.size() + near.size());
+  result.row_start_.reserve(result.height() + 1);
+  for (int y = 0; y < result.height(); ++y) {
+    result.row_start_.push_back(static_cast<int>(result.runs_.size()));
+    if (changed[y]) {
+      result.AppendRunsOfRow(y);
+    } else {
+      result.runs_.insert(result.runs_.end(), base.RunsBegin(y), base.RunsEnd(y));
+    }
   }
-  return Build(grid, clearance, bound);
+  result.row_start_.push_back(static_cast<int>(result.runs_.size()));
+  return result;
 }
 
 AnyAngleGrid AnyAngleGrid::OnPlanningGrid(std::shared_ptr<const OccupancyGrid> subdivided) {
@@ -172,22 +192,26 @@ AnyAngleGrid AnyAngleGrid::OnPlanningGrid(std::shared_ptr<const OccupancyGrid> s
 }
 
 void AnyAngleGrid::FindRuns() {
-  const OccupancyGrid& planning = *planning_;
-  row_start_.reserve(planning.height() + 1);
-  for (int y = 0; y < planning.height(); ++y) {
+  row_start_.reserve(height() + 1);
+  for (int y = 0; y < height(); ++y) {
     row_start_.push_back(static_cast<int>(runs_.size()));
-    int x = 0;
-    while (x < planning.width()) {
-      if (planning.IsBlocked(x, y)) {
-        ++x;
-        continue;
-      }
-      const int begin = x;
-      while (x < planning.width() && !planning.IsBlocked(x, y)) ++x;
-      runs_.push_back(Run{begin, x});
-    }
+    AppendRunsOfRow(y);
   }
   row_start_.push_back(static_cast<int>(runs_.size()));
+}
+
+void AnyAngleGrid::AppendRunsOfRow(int y) {
+  const OccupancyGrid& planning = *planning_;
+  int x = 0;
+  while (x < planning.width()) {
+    if (planning.IsBlocked(x, y)) {
+      ++x;
+      continue;
+    }
+    const int begin = x;
+    while (x < planning.width() && !planning.IsBlocked(x, y)) ++x;
+    runs_.push_back(Run{begin, x});
+  }
 }
 
 const AnyAngleGrid::Run* AnyAngleGrid::RunsBegin(int y) const {

@@ -53,6 +53,7 @@ class AnyAngleGrid {
  private:
   static AnyAngleGrid OnPlanningGrid(std::shared_ptr<const OccupancyGrid> subdivided);
   void FindRuns();  // of planning_
+  void AppendRunsOfRow(int y);
 
   std::shared_ptr<const OccupancyGrid> subdivided_;  // null when the clearance is 0
   const OccupancyGrid* planning_ = nullptr;
