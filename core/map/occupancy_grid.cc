@@ -41,7 +41,7 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
   grid.height_ = height;
   grid.resolution_ = resolution;
   grid.origin_ = origin;
-  // Checked, then converted, in loops without an exit per cell, which the compiler vectorises:
+  // Checked, then counted, in loops without an exit per cell, which the compiler vectorises:
   // subdivided grids of the exact planners have millions of cells.
   const size_t n = cells.size();
   const int8_t* v = cells.data();
@@ -57,11 +57,8 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
                                                    " has value ", cells[i],
                                                    "; values are -1 (unknown) or 0..100"));
   }
-  grid.blocked_.resize(n);
-  uint8_t* blocked = grid.blocked_.data();
-  for (size_t i = 0; i < n; ++i) blocked[i] = (v[i] == kUnknown) | (v[i] >= kBlockedThreshold);
   int64_t blocked_count = 0;
-  for (size_t i = 0; i < n; ++i) blocked_count += blocked[i];
+  for (size_t i = 0; i < n; ++i) blocked_count += IsBlockedValue(v[i]);
   grid.blocked_count_ = blocked_count;
   grid.cells_ = std::move(cells);
   return grid;
@@ -74,12 +71,10 @@ OccupancyGrid OccupancyGrid::WithBlocked(const std::vector<Cell>& cells) const {
   grid.resolution_ = resolution_;
   grid.origin_ = origin_;
   grid.cells_ = cells_;
-  grid.blocked_ = blocked_;
   grid.blocked_count_ = blocked_count_;
   std::vector<Cell> added;
   for (const Cell& c : cells) {
-    if (!InBounds(c) || grid.blocked_[Index(c.x, c.y)]) continue;
-    grid.blocked_[Index(c.x, c.y)] = 1;
+    if (!InBounds(c) || IsBlockedValue(grid.cells_[Index(c.x, c.y)])) continue;
     grid.cells_[Index(c.x, c.y)] = kOccupied;
     ++grid.blocked_count_;
     added.push_back(c);
@@ -101,7 +96,9 @@ const std::vector<double>& OccupancyGrid::ComputeDistanceField() const {
       field.base.reset();
       field.added = {};
     } else {
-      field.values = SquaredDistanceTransform(width_, height_, blocked_);
+      std::vector<uint8_t> blocked(cells_.size());
+      for (size_t i = 0; i < cells_.size(); ++i) blocked[i] = IsBlockedValue(cells_[i]);
+      field.values = SquaredDistanceTransform(width_, height_, blocked);
       for (double& d : field.values) d = std::sqrt(d) * resolution_;
     }
     field.ready.store(true, std::memory_order_release);

@@ -27,6 +27,9 @@ class OccupancyGrid {
   static constexpr int8_t kOccupied = 100;
   // A cell is blocked when its value is unknown or at least this.
   static constexpr int8_t kBlockedThreshold = 50;
+  // For a valid value: unknown (-1, 255 as a byte) and kBlockedThreshold..100 are the bytes from
+  // the threshold up.
+  static bool IsBlockedValue(int8_t v) { return static_cast<uint8_t>(v) >= kBlockedThreshold; }
 
   // `cells` is row-major, width * height values, each -1 or 0..100.
   static absl::StatusOr<OccupancyGrid> Create(int width, int height, std::vector<int8_t> cells,
@@ -44,7 +47,7 @@ class OccupancyGrid {
   bool InBounds(Cell c) const { return InBounds(c.x, c.y); }
   int8_t value(int x, int y) const { return cells_[Index(x, y)]; }
   // Outside the grid counts as blocked.
-  bool IsBlocked(int x, int y) const { return !InBounds(x, y) || blocked_[Index(x, y)]; }
+  bool IsBlocked(int x, int y) const { return !InBounds(x, y) || IsBlockedValue(value(x, y)); }
   bool IsBlocked(Cell c) const { return IsBlocked(c.x, c.y); }
   bool IsFree(Cell c) const { return !IsBlocked(c); }
 
@@ -91,7 +94,6 @@ class OccupancyGrid {
   double resolution_ = 1.0;
   Point2 origin_ = Point2::Zero();
   std::vector<int8_t> cells_;
-  std::vector<uint8_t> blocked_;
   std::shared_ptr<LazyDistanceField> distance_ = std::make_shared<LazyDistanceField>();
   int64_t blocked_count_ = 0;
 };

@@ -237,7 +237,7 @@ int64_t AnyAngleGrid::MemoryBytes() const {
       static_cast<int64_t>(runs_.capacity() * sizeof(Run) + row_start_.capacity() * sizeof(int));
   if (subdivided_ != nullptr) {
     const int64_t cells = static_cast<int64_t>(subdivided_->width()) * subdivided_->height();
-    bytes += cells * (sizeof(int8_t) + sizeof(uint8_t));
+    bytes += cells * sizeof(int8_t);
   }
   return bytes;
 }
