@@ -65,13 +65,7 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
 }
 
 OccupancyGrid OccupancyGrid::WithBlocked(const std::vector<Cell>& cells) const {
-  OccupancyGrid grid;
-  grid.width_ = width_;
-  grid.height_ = height_;
-  grid.resolution_ = resolution_;
-  grid.origin_ = origin_;
-  grid.cells_ = cells_;
-  grid.blocked_count_ = blocked_count_;
+  OccupancyGrid grid = *this;  // sharing this grid's distance field
   std::vector<Cell> added;
   for (const Cell& c : cells) {
     if (!InBounds(c) || IsBlockedValue(grid.cells_[Index(c.x, c.y)])) continue;
@@ -79,9 +73,9 @@ OccupancyGrid OccupancyGrid::WithBlocked(const std::vector<Cell>& cells) const {
     ++grid.blocked_count_;
     added.push_back(c);
   }
-  if (added.empty()) {
-    grid.distance_ = distance_;  // the same cells: the same field
-  } else if (distance_field_computed()) {
+  if (added.empty()) return grid;  // the same cells: the same field
+  grid.distance_ = std::make_shared<LazyDistanceField>();
+  if (distance_field_computed()) {
     grid.distance_->base = distance_;
     grid.distance_->added = std::move(added);
   }
