@@ -30,18 +30,22 @@ struct SubCellReach {
         reach(clearance / grid.resolution() * s),
         lower_reach(reach - std::numbers::sqrt2 / 2),
         window(static_cast<int>(std::ceil(clearance / grid.resolution())) + 1),
-        bound(bound) {}
+        bound(bound),
+        squared_limit(bound == ClearanceBound::kUpper ? reach * reach
+                      : lower_reach > 0               ? lower_reach * lower_reach
+                                                      : -1.0) {}
+
+  // The gap along one axis between sub-cell v (its square, or for kLower its centre) and the
+  // blocked map cell whose lowest sub-cell is c.
+  double AxisGap(int v, int c) const {
+    if (bound == ClearanceBound::kUpper) return std::max({0, c - (v + 1), v - (c + s)});
+    return std::max({0.0, c - (v + 0.5), (v + 0.5) - (c + s)});
+  }
 
   // Sub-cell (sx, sy) against the blocked map cell whose lowest sub-cell is `c`.
   bool Near(int sx, int sy, const Cell& c) const {
-    if (bound == ClearanceBound::kUpper) {
-      const double gx = std::max({0, c.x - (sx + 1), sx - (c.x + s)});
-      const double gy = std::max({0, c.y - (sy + 1), sy - (c.y + s)});
-      return gx * gx + gy * gy < reach * reach;
-    }
-    const double gx = std::max({0.0, c.x - (sx + 0.5), (sx + 0.5) - (c.x + s)});
-    const double gy = std::max({0.0, c.y - (sy + 0.5), (sy + 0.5) - (c.y + s)});
-    return lower_reach > 0 && gx * gx + gy * gy < lower_reach * lower_reach;
+    const double gx = AxisGap(sx, c.x), gy = AxisGap(sy, c.y);
+    return gx * gx + gy * gy < squared_limit;
   }
 
   int s;
@@ -49,6 +53,68 @@ struct SubCellReach {
   double lower_reach;
   int window;  // map cells around a blocked cell whose sub-cells may lie near it
   ClearanceBound bound;
+  double squared_limit;  // a sub-cell is near when its squared gaps sum to less
+};
+
+// SubCellReach::Near for every sub-cell of one map cell against the blocked cells within the
+// window around it: the squared gaps per axis first, then per sub-cell a count of the near
+// blocked cells without an exit per cell, which the compiler vectorises.
+class WindowTest {
+ public:
+  WindowTest(const OccupancyGrid& grid, const SubCellReach& near_by)
+      : grid_(grid),
+        near_by_(near_by),
+        capacity_((2 * near_by.window + 1) * (2 * near_by.window + 1)) {
+    lowest_x_.resize(capacity_);
+    lowest_y_.resize(capacity_);
+    squared_x_.resize(static_cast<size_t>(near_by.s) * capacity_);
+    squared_y_.resize(static_cast<size_t>(near_by.s) * capacity_);
+  }
+
+  // Blocks the sub-cells of map cell (x, y) near a blocked cell in `cells` (the sub-cell grid).
+  void BlockNear(int x, int y, std::vector<int8_t>& cells) {
+    const int s = near_by_.s, window = near_by_.window;
+    const int8_t* values = grid_.cells().data();
+    int k = 0;
+    for (int ny = std::max(0, y - window); ny <= std::min(grid_.height() - 1, y + window); ++ny) {
+      const int8_t* row = values + static_cast<size_t>(ny) * grid_.width();
+      for (int nx = std::max(0, x - window); nx <= std::min(grid_.width() - 1, x + window); ++nx) {
+        lowest_x_[k] = nx * s;
+        lowest_y_[k] = ny * s;
+        k += OccupancyGrid::IsBlockedValue(row[nx]) ? 1 : 0;
+      }
+    }
+    if (k == 0) return;
+    for (int i = 0; i < s; ++i) {
+      double* gx = squared_x_.data() + static_cast<size_t>(i) * capacity_;
+      double* gy = squared_y_.data() + static_cast<size_t>(i) * capacity_;
+      for (int j = 0; j < k; ++j) {
+        const double a = near_by_.AxisGap(x * s + i, lowest_x_[j]);
+        const double b = near_by_.AxisGap(y * s + i, lowest_y_[j]);
+        gx[j] = a * a;
+        gy[j] = b * b;
+      }
+    }
+    const int w = grid_.width() * s;
+    const double limit = near_by_.squared_limit;
+    for (int l = 0; l < s; ++l) {
+      const double* gy = squared_y_.data() + static_cast<size_t>(l) * capacity_;
+      int8_t* out = cells.data() + static_cast<size_t>(y * s + l) * w + x * s;
+      for (int i = 0; i < s; ++i) {
+        const double* gx = squared_x_.data() + static_cast<size_t>(i) * capacity_;
+        int near = 0;
+        for (int j = 0; j < k; ++j) near += gx[j] + gy[j] < limit ? 1 : 0;
+        if (near > 0) out[i] = OccupancyGrid::kOccupied;
+      }
+    }
+  }
+
+ private:
+  const OccupancyGrid& grid_;
+  const SubCellReach& near_by_;
+  const int capacity_;
+  std::vector<int> lowest_x_, lowest_y_;
+  std::vector<double> squared_x_, squared_y_;  // s rows of capacity_: sub-cell column (row) i
 };
 
 OccupancyGrid SubdividedGrid(const OccupancyGrid& grid, int s, std::vector<int8_t> cells) {
@@ -95,17 +161,16 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
   // Per cell, from D, the distance between its centre and the nearest blocked cell's (the
   // grid's own distance field): every point of the cell lies at least D - sqrt(2) and at most
   // D + sqrt(2) / 2 from the nearest blocked square. Only cells between the two need their
-  // sub-cells measured, against the blocked squares within `window` cells (those that can come
+  // sub-cells measured, against the blocked squares within the window (those that can come
   // closer than the clearance).
   const double reach_cells = clearance / grid.resolution();
-  const int window = near_by.window;
   const auto fill = [&](int x, int y) {
     for (int j = 0; j < s; ++j) {
       std::fill_n(cells.begin() + (static_cast<size_t>(y * s + j) * w + x * s), s,
                   OccupancyGrid::kOccupied);
     }
   };
-  std::vector<Cell> near;
+  WindowTest near_blocked(grid, near_by);
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
       const double d = grid.DistanceToObstacle(x, y) / grid.resolution();
@@ -114,24 +179,7 @@ OccupancyGrid ClearanceGrid(const OccupancyGrid& grid, double clearance, Clearan
         continue;
       }
       if (d - std::numbers::sqrt2 >= reach_cells) continue;
-      near.clear();
-      for (int ny = std::max(0, y - window); ny <= std::min(grid.height() - 1, y + window); ++ny) {
-        for (int nx = std::max(0, x - window); nx <= std::min(grid.width() - 1, x + window); ++nx) {
-          if (grid.IsBlocked(nx, ny)) near.push_back({nx * s, ny * s});
-        }
-      }
-      if (near.empty()) continue;
-      for (int j = 0; j < s; ++j) {
-        for (int i = 0; i < s; ++i) {
-          const int sx = x * s + i, sy = y * s + j;
-          for (const Cell& c : near) {
-            if (near_by.Near(sx, sy, c)) {
-              cells[static_cast<size_t>(sy) * w + sx] = OccupancyGrid::kOccupied;
-              break;
-            }
-          }
-        }
-      }
+      near_blocked.BlockNear(x, y, cells);
     }
   }
   return SubdividedGrid(grid, s, std::move(cells));
