@@ -66,16 +66,18 @@ absl::StatusOr<OccupancyGrid> OccupancyGrid::Create(int width, int height,
 
 OccupancyGrid OccupancyGrid::WithBlocked(const std::vector<Cell>& cells) const {
   OccupancyGrid grid = *this;  // sharing this grid's distance field
+  // The newly blocked cells matter only to a field derived from this grid's computed one.
+  const bool derive = distance_field_computed();
   std::vector<Cell> added;
   for (const Cell& c : cells) {
     if (!InBounds(c) || IsBlockedValue(grid.cells_[Index(c.x, c.y)])) continue;
     grid.cells_[Index(c.x, c.y)] = kOccupied;
     ++grid.blocked_count_;
-    added.push_back(c);
+    if (derive) added.push_back(c);
   }
-  if (added.empty()) return grid;  // the same cells: the same field
+  if (grid.blocked_count_ == blocked_count_) return grid;  // the same cells: the same field
   grid.distance_ = std::make_shared<LazyDistanceField>();
-  if (distance_field_computed()) {
+  if (derive) {
     grid.distance_->base = distance_;
     grid.distance_->added = std::move(added);
   }
