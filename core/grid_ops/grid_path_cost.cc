@@ -28,6 +28,7 @@ GridPathCost::GridPathCost(const GridSpace& space, const Problem& problem,
                            std::unique_ptr<FitnessEngine> fleet)
     : space_(&space),
       preferred_clearance_(fleet ? problem.fleet.preferred_clearance : 0.0),
+      clearance_weight_(problem.fleet.clearance_weight),
       turning_radius_(fleet ? problem.fleet.turning_radius : 0.0),
       clearance_(problem.clearance),
       fleet_(std::move(fleet)) {
@@ -38,7 +39,7 @@ std::optional<Path> GridPathCost::PathOf(const std::vector<Cell>& cells) const {
   if (fleet_ == nullptr || preferred_clearance_ <= 0.0) return AnyAnglePath(*space_, cells);
   if (cells.empty()) return std::nullopt;
   return ShortcutKeepingClearance(*space_, space_->WorldPath(cells), fleet_->proximity().field(),
-                                  preferred_clearance_);
+                                  preferred_clearance_, clearance_weight_);
 }
 
 double GridPathCost::Cost(const Path& path) {

@@ -32,23 +32,25 @@ std::optional<Path> PullString(const GridSpace& space, const Path& path) {
   return PullString(space, path, [](size_t, size_t) { return true; });
 }
 
-// Moves each interior point to the corner of its cell that shortens the path most while both
-// its segments stay free. On a grid the shortest path bends at obstacle corners, which are cell
-// corners; the centres a cell path runs through lie half a cell off them.
-void PullToCellCorners(const GridSpace& space, Path& path) {
+// Moves each interior point to the corner of its cell where `cost(before, point, after)` of its
+// two segments is least, while both stay free; it stays unless a corner costs less. On a grid
+// the shortest path bends at obstacle corners, which are cell corners; the centres a cell path
+// runs through lie half a cell off them.
+template <typename Cost>
+void PullToCellCorners(const GridSpace& space, Path& path, Cost cost) {
   const double half = space.grid->resolution() / 2.0;
   for (size_t i = 1; i + 1 < path.size(); ++i) {
     const Point3& before = path[i - 1];
     const Point3& after = path[i + 1];
-    double best = (path[i] - before).norm() + (after - path[i]).norm();
+    double best = cost(before, path[i], after);
     Point3 chosen = path[i];
     for (const double dx : {-half, half}) {
       for (const double dy : {-half, half}) {
         const Point3 corner = path[i] + Point3(dx, dy, 0.0);
-        const double length = (corner - before).norm() + (after - corner).norm();
-        if (length < best - 1e-12 && space.SegmentFree(before, corner) &&
+        const double c = cost(before, corner, after);
+        if (c < best - 1e-12 && space.SegmentFree(before, corner) &&
             space.SegmentFree(corner, after)) {
-          best = length;
+          best = c;
           chosen = corner;
         }
       }
@@ -57,20 +59,24 @@ void PullToCellCorners(const GridSpace& space, Path& path) {
   }
 }
 
+double TwoSegmentLength(const Point3& before, const Point3& point, const Point3& after) {
+  return (point - before).norm() + (after - point).norm();
+}
+
 }  // namespace
 
 std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path) {
   std::optional<Path> pulled = PullString(space, path);
   if (!pulled) return std::nullopt;
-  PullToCellCorners(space, *pulled);
+  PullToCellCorners(space, *pulled, TwoSegmentLength);
   pulled = PullString(space, *pulled);
   if (!pulled) return std::nullopt;
   return PruneCollinear(*pulled);
 }
 
 std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path& path,
-                                             const DistanceField& field,
-                                             double preferred_clearance) {
+                                             const DistanceField& field, double preferred_clearance,
+                                             double clearance_weight) {
   std::vector<double> vertex_clearance(path.size());
   for (size_t i = 0; i < path.size(); ++i) {
     vertex_clearance[i] = std::min(preferred_clearance, field.Bilinear(path[i].x(), path[i].y()));
@@ -88,6 +94,13 @@ std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path&
     return field.SegmentKeeps(path[anchor].head<2>(), path[j].head<2>(), stretch_floor);
   });
   if (!pulled) return std::nullopt;
+  PullToCellCorners(
+      space, *pulled, [&](const Point3& before, const Point3& point, const Point3& after) {
+        const double shortfall =
+            field.ShortfallAlong(before.head<2>(), point.head<2>(), preferred_clearance) +
+            field.ShortfallAlong(point.head<2>(), after.head<2>(), preferred_clearance);
+        return TwoSegmentLength(before, point, after) + clearance_weight * shortfall;
+      });
   return PruneCollinear(*pulled);
 }
 

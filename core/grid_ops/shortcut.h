@@ -22,12 +22,14 @@ std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path);
 // The shortening for a fleet objective with a preferred clearance: the same string pulling, but
 // a straight segment replaces a stretch of `path` only when it stays, by the field's bilinear
 // distance, at least as far from the obstacles as the nearer of `preferred_clearance` and the
-// closest vertex of the stretch; no corner pull. So a path that keeps away from the walls is
-// straightened without being pulled back against them. Never longer than `path`; nullopt as
-// ShortcutPath.
+// closest vertex of the stretch. So a path that keeps away from the walls is straightened
+// without being pulled back against them. Then each kept interior point moves to the corner of
+// its cell where its two segments' length plus `clearance_weight` times their shortfall below
+// `preferred_clearance` (DistanceField::ShortfallAlong) is least: a bend may trade a little
+// clearance for length, as the objective prices it. nullopt as ShortcutPath.
 std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path& path,
-                                             const DistanceField& field,
-                                             double preferred_clearance);
+                                             const DistanceField& field, double preferred_clearance,
+                                             double clearance_weight);
 
 // ShortcutPath of the cell path's world path (GridSpace::WorldPath); consecutive cells need not
 // be neighbours (a line-of-sight move joins two cell centres). nullopt when `cells` is empty or

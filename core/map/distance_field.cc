@@ -57,11 +57,32 @@ DistanceField DistanceField::FromBlockedCells(int width, int height,
   return field;
 }
 
+namespace {
+
+// The fewest pieces no longer than half a cell that a segment of `length` splits into.
+int HalfCellPieces(double length, double cell) {
+  return static_cast<int>(std::clamp(std::ceil(2.0 * length / cell), 1.0, double{1 << 30}));
+}
+
+}  // namespace
+
+double DistanceField::ShortfallAlong(const Point2& a, const Point2& b, double floor) const {
+  if (SegmentKeeps(a, b, floor)) return 0.0;
+  const Point2 step = b - a;
+  const int pieces = HalfCellPieces(step.norm(), cell_);
+  double sum = 0.0;
+  for (int k = 0; k <= pieces; ++k) {
+    const Point2 p = a + step * (static_cast<double>(k) / pieces);
+    const double weight = k == 0 || k == pieces ? 0.5 : 1.0;
+    sum += weight * std::max(0.0, floor - Bilinear(p.x(), p.y()));
+  }
+  return sum * step.norm() / pieces;
+}
+
 bool DistanceField::SegmentKeeps(const Point2& a, const Point2& b, double floor) const {
   const Point2 step = b - a;
   const double length = step.norm();
-  const int pieces =
-      static_cast<int>(std::clamp(std::ceil(2.0 * length / cell_), 1.0, double{1 << 30}));
+  const int pieces = HalfCellPieces(length, cell_);
   auto sample = [&](int k) {
     const Point2 p = a + step * (static_cast<double>(k) / pieces);
     return Bilinear(p.x(), p.y());

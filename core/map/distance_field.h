@@ -66,6 +66,9 @@ class DistanceField {
   // more than slope_bound() lets the value fall between them are accepted unread, so open
   // space costs a few reads per segment; the verdict is the dense check's.
   bool SegmentKeeps(const Point2& a, const Point2& b, double floor) const;
+  // The integral of max(0, floor - Bilinear) along [a, b], by the trapezoid rule at the points
+  // SegmentKeeps reads; 0 where SegmentKeeps holds, without reading them all.
+  double ShortfallAlong(const Point2& a, const Point2& b, double floor) const;
 
  private:
   int width_ = 0, height_ = 0;

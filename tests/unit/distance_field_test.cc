@@ -102,5 +102,46 @@ TEST(DistanceFieldTest, SegmentKeepsGivesTheDenseVerdict) {
   EXPECT_GT(refused, 1000);
 }
 
+TEST(DistanceFieldTest, ShortfallAlongIsTheTrapezoidOfTheSamples) {
+  Rng rng(17);
+  int zero = 0, positive = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const double cell = rng.Uniform(0.2, 1.5);
+    const DistanceField field = RandomField(rng, 64, 48, cell, rng.Uniform(0.002, 0.05));
+    for (int i = 0; i < 2000; ++i) {
+      const Point2 a(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
+      const Point2 b = a + Point2(rng.Uniform(-8, 8), rng.Uniform(-8, 8)) * cell;
+      const double floor = rng.Uniform(0.0, 3.0) * cell;
+      const Point2 step = b - a;
+      const int pieces =
+          std::max(1, static_cast<int>(std::ceil(2.0 * step.norm() / field.cell_size())));
+      double dense = 0.0;
+      for (int k = 0; k <= pieces; ++k) {
+        const Point2 p = a + step * (static_cast<double>(k) / pieces);
+        dense += (k == 0 || k == pieces ? 0.5 : 1.0) *
+                 std::max(0.0, floor - field.Bilinear(p.x(), p.y()));
+      }
+      dense *= step.norm() / pieces;
+      const double shortfall = field.ShortfallAlong(a, b, floor);
+      ASSERT_NEAR(shortfall, dense, 1e-12 * (1.0 + dense))
+          << "a " << a.transpose() << " b " << b.transpose() << " floor " << floor;
+      shortfall == 0.0 ? ++zero : ++positive;
+    }
+  }
+  EXPECT_GT(zero, 500);
+  EXPECT_GT(positive, 500);
+}
+
+TEST(DistanceFieldTest, ShortfallAlongAWallIsTheGapTimesTheLength) {
+  // A wall along row 0 of a 40 x 20 field of unit cells: the centres of row 3 lie 3 from the
+  // wall's and read 3 - 0.5 (half a cell less), so along y = 3.5 the value is 2.5.
+  std::vector<uint8_t> blocked(40 * 20, 0);
+  for (int x = 0; x < 40; ++x) blocked[x] = 1;
+  const DistanceField field =
+      DistanceField::FromBlockedCells(40, 20, blocked, 1.0, Point2::Zero(), false);
+  EXPECT_NEAR(field.ShortfallAlong(Point2(5.5, 3.5), Point2(30.5, 3.5), 4.5), 2.0 * 25.0, 1e-9);
+  EXPECT_EQ(field.ShortfallAlong(Point2(5.5, 3.5), Point2(30.5, 3.5), 2.5), 0.0);
+}
+
 }  // namespace
 }  // namespace swarmplan

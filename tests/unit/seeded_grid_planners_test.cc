@@ -184,6 +184,53 @@ TEST(GridSeedingTest, ShortcutKeepingClearanceStraightensWithoutHuggingTheWalls)
   EXPECT_LT(PathLength(*taut), PathLength(*kept));
 }
 
+TEST(GridSeedingTest, ShortcutKeepingClearanceMovesBendsWhereTheObjectiveFalls) {
+  // Cell paths round a 6 x 6 block in a 30 x 30 room, at 1 to 5 cells from it, with a preferred
+  // clearance of 3: each bend of the straightened path sits at a cell's centre or at one of its
+  // corners, and the corners taken lower the objective against the same path through the
+  // centres.
+  std::vector<std::string> rows(30, std::string(30, '.'));
+  for (int y = 12; y < 18; ++y) rows[y].replace(12, 6, "######");
+  const MapPtr map = testing::GridMap(rows);
+  Problem problem = MakeProblem(map, {14.5, 3.5}, {14.5, 26.5});
+  problem.fleet.preferred_clearance = 3.0;
+  absl::StatusOr<GridSpace> space = MakeGridSpace(problem, 0.0);
+  ASSERT_TRUE(space.ok()) << space.status();
+  absl::StatusOr<GridPathCost> cost = GridPathCost::Create(problem, *space);
+  ASSERT_TRUE(cost.ok()) << cost.status();
+  int moved_paths = 0;
+  for (int gap = 1; gap <= 5; ++gap) {
+    const int side = 11 - gap;  // the column the path runs down, left of the block
+    std::vector<Cell> around{{14, 3}};
+    for (int x = 13; x > side; --x) around.push_back({x, 3 + (14 - x)});
+    for (int y = 3 + (14 - side); y <= 26 - (14 - side); ++y) around.push_back({side, y});
+    for (int x = side + 1; x <= 14; ++x) around.push_back({x, 26 - (14 - x)});
+    ASSERT_EQ(around.back(), space->goal) << "gap " << gap;
+    const std::optional<Path> kept = cost->PathOf(around);
+    ASSERT_TRUE(kept.has_value()) << "gap " << gap;
+    EXPECT_EQ(kept->front(), problem.start);
+    EXPECT_EQ(kept->back(), problem.goal);
+    EXPECT_GE(seed_testing::Clearance(*map, *kept), problem.clearance);
+    Path centres = *kept;
+    int moved = 0;
+    for (size_t i = 1; i + 1 < centres.size(); ++i) {
+      const Point3 centre(std::floor(centres[i].x()) + 0.5, std::floor(centres[i].y()) + 0.5, 0);
+      const Point3 offset = (centres[i] - centre).cwiseAbs();
+      const bool at_centre = offset.isZero(), at_corner = offset.isApprox(Point3(0.5, 0.5, 0));
+      EXPECT_TRUE(at_centre || at_corner) << "gap " << gap << " vertex " << i;
+      moved += at_corner;
+      centres[i] = centre;
+    }
+    absl::StatusOr<FleetTerms> kept_terms = EvaluateFleetObjective(problem, *kept);
+    absl::StatusOr<FleetTerms> centre_terms = EvaluateFleetObjective(problem, centres);
+    ASSERT_TRUE(kept_terms.ok() && centre_terms.ok());
+    if (moved == 0) continue;
+    ++moved_paths;
+    EXPECT_LT(kept_terms->Total(), centre_terms->Total()) << "gap " << gap;
+  }
+  EXPECT_GE(moved_paths, 3);
+}
+
 // What a seeded grid planner starts from: the problem's grid space, 8-connected moves with
 // line-of-sight steps, and up to three seeds (or why there are none). Neither copied nor moved:
 // the seeds refer to the space.
