@@ -20,8 +20,8 @@ namespace swarmplan {
 // length, and the any-angle path is AnyAnglePath's (pulled taut against the corners, so the
 // exact optimum is reachable). With a preferred clearance, ShortcutKeepingClearance straightens
 // the path without pulling it nearer the walls, so a path the swarm moved away from them keeps
-// the clearance it gained, and moves each bend to the corner of its cell where the objective's
-// length and shortfall are least.
+// the clearance it gained, and moves each bend within its cell (to a corner or an edge's
+// midpoint) where the objective's length and shortfall are least.
 //
 // With a turning radius the plan returns the path after the bounded-curvature smoothing, so the
 // seeds and the swarm's result, a few paths per plan, are also judged by the smoothing itself

@@ -1,7 +1,9 @@
 #include "core/grid_ops/shortcut.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "core/grid_ops/collinear.h"
 
@@ -32,27 +34,38 @@ std::optional<Path> PullString(const GridSpace& space, const Path& path) {
   return PullString(space, path, [](size_t, size_t) { return true; });
 }
 
-// Moves each interior point to the corner of its cell where `cost(before, point, after)` of its
-// two segments is least, while both stay free; it stays unless a corner costs less. On a grid
-// the shortest path bends at obstacle corners, which are cell corners; the centres a cell path
-// runs through lie half a cell off them.
+// Where a bend may move within its cell, in half cells from the centre. On a grid the shortest
+// path bends at obstacle corners, which are cell corners; the centres a cell path runs through
+// lie half a cell off them. A bend that trades clearance for length may rest between them.
+using CellOffsets = std::vector<std::array<int, 2>>;
+const CellOffsets& CellCorners() {
+  static const CellOffsets offsets{{-1, -1}, {-1, 1}, {1, -1}, {1, 1}};
+  return offsets;
+}
+const CellOffsets& CornersAndEdgeMidpoints() {
+  static const CellOffsets offsets{{-1, -1}, {-1, 0}, {-1, 1}, {0, -1},
+                                   {0, 1},   {1, -1}, {1, 0},  {1, 1}};
+  return offsets;
+}
+
+// Moves each interior point to the point of its cell at one of `offsets` where
+// `cost(before, point, after)` of its two segments is least, while both stay free; it stays
+// unless such a point costs less.
 template <typename Cost>
-void PullToCellCorners(const GridSpace& space, Path& path, Cost cost) {
+void MoveBendsWithinCells(const GridSpace& space, Path& path, const CellOffsets& offsets,
+                          Cost cost) {
   const double half = space.grid->resolution() / 2.0;
   for (size_t i = 1; i + 1 < path.size(); ++i) {
     const Point3& before = path[i - 1];
     const Point3& after = path[i + 1];
     double best = cost(before, path[i], after);
     Point3 chosen = path[i];
-    for (const double dx : {-half, half}) {
-      for (const double dy : {-half, half}) {
-        const Point3 corner = path[i] + Point3(dx, dy, 0.0);
-        const double c = cost(before, corner, after);
-        if (c < best - 1e-12 && space.SegmentFree(before, corner) &&
-            space.SegmentFree(corner, after)) {
-          best = c;
-          chosen = corner;
-        }
+    for (const std::array<int, 2>& offset : offsets) {
+      const Point3 moved = path[i] + Point3(half * offset[0], half * offset[1], 0.0);
+      const double c = cost(before, moved, after);
+      if (c < best - 1e-12 && space.SegmentFree(before, moved) && space.SegmentFree(moved, after)) {
+        best = c;
+        chosen = moved;
       }
     }
     path[i] = chosen;
@@ -68,7 +81,7 @@ double TwoSegmentLength(const Point3& before, const Point3& point, const Point3&
 std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path) {
   std::optional<Path> pulled = PullString(space, path);
   if (!pulled) return std::nullopt;
-  PullToCellCorners(space, *pulled, TwoSegmentLength);
+  MoveBendsWithinCells(space, *pulled, CellCorners(), TwoSegmentLength);
   pulled = PullString(space, *pulled);
   if (!pulled) return std::nullopt;
   return PruneCollinear(*pulled);
@@ -94,8 +107,9 @@ std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path&
     return field.SegmentKeeps(path[anchor].head<2>(), path[j].head<2>(), stretch_floor);
   });
   if (!pulled) return std::nullopt;
-  PullToCellCorners(
-      space, *pulled, [&](const Point3& before, const Point3& point, const Point3& after) {
+  MoveBendsWithinCells(
+      space, *pulled, CornersAndEdgeMidpoints(),
+      [&](const Point3& before, const Point3& point, const Point3& after) {
         const double shortfall =
             field.ShortfallAlong(before.head<2>(), point.head<2>(), preferred_clearance) +
             field.ShortfallAlong(point.head<2>(), after.head<2>(), preferred_clearance);

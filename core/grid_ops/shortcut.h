@@ -23,9 +23,10 @@ std::optional<Path> ShortcutPath(const GridSpace& space, const Path& path);
 // a straight segment replaces a stretch of `path` only when it stays, by the field's bilinear
 // distance, at least as far from the obstacles as the nearer of `preferred_clearance` and the
 // closest vertex of the stretch. So a path that keeps away from the walls is straightened
-// without being pulled back against them. Then each kept interior point moves to the corner of
-// its cell where its two segments' length plus `clearance_weight` times their shortfall below
-// `preferred_clearance` (DistanceField::ShortfallAlong) is least: a bend may trade a little
+// without being pulled back against them. Then each kept interior point moves to a corner or an
+// edge's midpoint of its cell, or stays at its centre, whichever makes its two segments' length
+// plus `clearance_weight` times their shortfall below `preferred_clearance`
+// (DistanceField::ShortfallAlong) least, the segments kept free: a bend may trade a little
 // clearance for length, as the objective prices it. nullopt as ShortcutPath.
 std::optional<Path> ShortcutKeepingClearance(const GridSpace& space, const Path& path,
                                              const DistanceField& field, double preferred_clearance,
