@@ -18,16 +18,33 @@ DistanceField RandomField(Rng& rng, int width, int height, double cell, double d
                                          rng.Uniform() < 0.5);
 }
 
-// The definition SegmentKeeps must agree with: every sample, read.
-bool DenseKeeps(const DistanceField& field, const Point2& a, const Point2& b, double floor) {
+// Bilinear at the points SegmentKeeps and ShortfallAlong read, every one of them: a + (b - a)
+// k / n, k = 0..n, n the fewest pieces no longer than half a cell.
+std::vector<double> DenseSamples(const DistanceField& field, const Point2& a, const Point2& b) {
   const Point2 step = b - a;
   const int pieces =
       std::max(1, static_cast<int>(std::ceil(2.0 * step.norm() / field.cell_size())));
+  std::vector<double> samples;
   for (int k = 0; k <= pieces; ++k) {
     const Point2 p = a + step * (static_cast<double>(k) / pieces);
-    if (field.Bilinear(p.x(), p.y()) < floor) return false;
+    samples.push_back(field.Bilinear(p.x(), p.y()));
   }
-  return true;
+  return samples;
+}
+
+// check(field, cell, a, rng) for `points` random points a on each of `fields` random 64 x 48
+// fields of sparse obstacles (origin (-3, 7)).
+template <typename Check>
+void AtRandomPoints(uint64_t seed, int fields, int points, Check check) {
+  Rng rng(seed);
+  for (int trial = 0; trial < fields; ++trial) {
+    const double cell = rng.Uniform(0.2, 1.5);
+    const DistanceField field = RandomField(rng, 64, 48, cell, rng.Uniform(0.002, 0.05));
+    for (int i = 0; i < points; ++i) {
+      const Point2 a(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
+      check(field, cell, a, rng);
+    }
+  }
 }
 
 // A 40 x 30 field of a random cell size and density (origin (-3, 7)), and points inside it.
@@ -80,54 +97,41 @@ TEST(DistanceFieldTest, BilinearDropBoundHoldsInEveryCell) {
 }
 
 TEST(DistanceFieldTest, SegmentKeepsGivesTheDenseVerdict) {
-  Rng rng(11);
   int kept = 0, refused = 0;
-  for (int trial = 0; trial < 8; ++trial) {
-    const double cell = rng.Uniform(0.2, 1.5);
-    const DistanceField field = RandomField(rng, 64, 48, cell, rng.Uniform(0.002, 0.05));
-    for (int i = 0; i < 3000; ++i) {
-      const Point2 a(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
-      const Point2 b(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
-      // Floors near the values the segment meets, where pruning is most tempting.
-      const double floor = std::min(field.Bilinear(a.x(), a.y()), field.Bilinear(b.x(), b.y())) *
-                           rng.Uniform(0.0, 1.0);
-      const bool dense = DenseKeeps(field, a, b, floor);
-      ASSERT_EQ(field.SegmentKeeps(a, b, floor), dense)
-          << "trial " << trial << " a " << a.transpose() << " b " << b.transpose() << " floor "
-          << floor;
-      dense ? ++kept : ++refused;
-    }
-  }
+  AtRandomPoints(
+      11, 8, 3000, [&](const DistanceField& field, double cell, const Point2& a, Rng& rng) {
+        const Point2 b(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
+        // Floors near the values the segment meets, where pruning is most tempting.
+        const double floor = std::min(field.Bilinear(a.x(), a.y()), field.Bilinear(b.x(), b.y())) *
+                             rng.Uniform(0.0, 1.0);
+        const std::vector<double> samples = DenseSamples(field, a, b);
+        const bool dense = *std::min_element(samples.begin(), samples.end()) >= floor;
+        ASSERT_EQ(field.SegmentKeeps(a, b, floor), dense)
+            << "a " << a.transpose() << " b " << b.transpose() << " floor " << floor;
+        dense ? ++kept : ++refused;
+      });
   EXPECT_GT(kept, 1000);
   EXPECT_GT(refused, 1000);
 }
 
 TEST(DistanceFieldTest, ShortfallAlongIsTheTrapezoidOfTheSamples) {
-  Rng rng(17);
   int zero = 0, positive = 0;
-  for (int trial = 0; trial < 6; ++trial) {
-    const double cell = rng.Uniform(0.2, 1.5);
-    const DistanceField field = RandomField(rng, 64, 48, cell, rng.Uniform(0.002, 0.05));
-    for (int i = 0; i < 2000; ++i) {
-      const Point2 a(rng.Uniform(-3.0, -3.0 + 64 * cell), rng.Uniform(7.0, 7.0 + 48 * cell));
-      const Point2 b = a + Point2(rng.Uniform(-8, 8), rng.Uniform(-8, 8)) * cell;
-      const double floor = rng.Uniform(0.0, 3.0) * cell;
-      const Point2 step = b - a;
-      const int pieces =
-          std::max(1, static_cast<int>(std::ceil(2.0 * step.norm() / field.cell_size())));
-      double dense = 0.0;
-      for (int k = 0; k <= pieces; ++k) {
-        const Point2 p = a + step * (static_cast<double>(k) / pieces);
-        dense += (k == 0 || k == pieces ? 0.5 : 1.0) *
-                 std::max(0.0, floor - field.Bilinear(p.x(), p.y()));
-      }
-      dense *= step.norm() / pieces;
-      const double shortfall = field.ShortfallAlong(a, b, floor);
-      ASSERT_NEAR(shortfall, dense, 1e-12 * (1.0 + dense))
-          << "a " << a.transpose() << " b " << b.transpose() << " floor " << floor;
-      shortfall == 0.0 ? ++zero : ++positive;
-    }
-  }
+  AtRandomPoints(17, 6, 2000,
+                 [&](const DistanceField& field, double cell, const Point2& a, Rng& rng) {
+                   const Point2 b = a + Point2(rng.Uniform(-8, 8), rng.Uniform(-8, 8)) * cell;
+                   const double floor = rng.Uniform(0.0, 3.0) * cell;
+                   const std::vector<double> samples = DenseSamples(field, a, b);
+                   double dense = 0.0;
+                   for (size_t k = 0; k < samples.size(); ++k) {
+                     const double weight = k == 0 || k + 1 == samples.size() ? 0.5 : 1.0;
+                     dense += weight * std::max(0.0, floor - samples[k]);
+                   }
+                   dense *= (b - a).norm() / static_cast<double>(samples.size() - 1);
+                   const double shortfall = field.ShortfallAlong(a, b, floor);
+                   ASSERT_NEAR(shortfall, dense, 1e-12 * (1.0 + dense))
+                       << "a " << a.transpose() << " b " << b.transpose() << " floor " << floor;
+                   shortfall == 0.0 ? ++zero : ++positive;
+                 });
   EXPECT_GT(zero, 500);
   EXPECT_GT(positive, 500);
 }
